@@ -1,0 +1,235 @@
+/* cddbridge.c -- every cddlib call of the library lives here.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   cddlib traps, all handled here: link -lcddgmp only (GMPRATIONAL);
+   setoper.h before cdd.h; dd_set_global_constants() exactly once per
+   process (forgetting it gives wrong answers silently); dd_NoError is not
+   0; cddlib is not thread-safe.  */
+
+#include <config.h>
+
+#include <pthread.h>
+#include <string.h>
+
+#include <gmp.h>
+#include <cddlib/setoper.h>
+#include <cddlib/cdd.h>
+#include <flint/fmpq.h>
+
+#include "wrenchcone.h"
+#include "cddbridge.h"
+
+static pthread_once_t cdd_once = PTHREAD_ONCE_INIT;
+
+static void
+cdd_init_once(void)
+{
+    dd_set_global_constants();
+}
+
+void
+wc_init(void)
+{
+    pthread_once(&cdd_once, cdd_init_once);
+}
+
+const char *
+wc_cdd_version(void)
+{
+    return dd_DDVERSION " (" dd_ARITHMETIC ")";
+}
+
+static slong
+rows_of(const fmpq_mat_t A)
+{
+    return A == NULL ? 0 : fmpq_mat_nrows(A);
+}
+
+/* Write row r of A, scaled by sign, into cdd row dst starting at col 1.  */
+static void
+put_row(mytype * dst, const fmpq_mat_t A, slong r, int sign, slong d)
+{
+    slong j;
+
+    for (j = 0; j < d; j++)
+    {
+        fmpq_get_mpq(dst[j + 1], fmpq_mat_entry(A, r, j));
+        if (sign < 0)
+            mpq_neg(dst[j + 1], dst[j + 1]);
+    }
+}
+
+static int
+cdd_fail(wc_error_t err, const char * what, dd_ErrorType e)
+{
+    return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                        "cddlib failed in %s (error %d)", what, (int) e);
+}
+
+/* Split the rows of a cdd matrix (homogeneous part, columns 1..d) into
+   those in its linearity set and the others, dropping zero rows and rows
+   with a nonzero column 0 (the origin vertex cddlib adds to cones).  */
+static void
+split_rows(fmpq_mat_t lin, fmpq_mat_t other, dd_MatrixPtr M, slong d,
+           int negate)
+{
+    slong i, j, nl = 0, no = 0, m = M->rowsize;
+    fmpq_mat_t L, O;
+
+    fmpq_mat_init(L, m, d);
+    fmpq_mat_init(O, m, d);
+    for (i = 0; i < m; i++)
+    {
+        int zero = 1, is_lin = set_member(i + 1, M->linset);
+        fmpq_mat_struct * T = is_lin ? L : O;
+        slong r = is_lin ? nl : no;
+
+        if (mpq_sgn(M->matrix[i][0]) != 0)
+            continue;
+        for (j = 0; j < d; j++)
+        {
+            fmpq_set_mpq(fmpq_mat_entry(T, r, j), M->matrix[i][j + 1]);
+            if (negate)
+                fmpq_neg(fmpq_mat_entry(T, r, j), fmpq_mat_entry(T, r, j));
+            if (!fmpq_is_zero(fmpq_mat_entry(T, r, j)))
+                zero = 0;
+        }
+        if (zero)
+        {
+            for (j = 0; j < d; j++)
+                fmpq_zero(fmpq_mat_entry(T, r, j));
+            continue;
+        }
+        if (is_lin)
+            nl++;
+        else
+            no++;
+    }
+    fmpq_mat_clear(lin);
+    fmpq_mat_clear(other);
+    fmpq_mat_init(lin, nl, d);
+    fmpq_mat_init(other, no, d);
+    for (i = 0; i < nl; i++)
+        for (j = 0; j < d; j++)
+            fmpq_set(fmpq_mat_entry(lin, i, j), fmpq_mat_entry(L, i, j));
+    for (i = 0; i < no; i++)
+        for (j = 0; j < d; j++)
+            fmpq_set(fmpq_mat_entry(other, i, j), fmpq_mat_entry(O, i, j));
+    fmpq_mat_clear(L);
+    fmpq_mat_clear(O);
+}
+
+int
+_wc_cdd_h_to_v(fmpq_mat_t rays, fmpq_mat_t lines, slong d,
+               const fmpq_mat_t E, const fmpq_mat_t H, wc_error_t err)
+{
+    dd_MatrixPtr A = NULL, G = NULL;
+    dd_PolyhedraPtr poly = NULL;
+    dd_ErrorType e = dd_NoError;
+    slong ne = rows_of(E), nh = rows_of(H), i, r = 0;
+    int status = WC_OK;
+
+    wc_init();
+    /* Row 0 is the trivial 1 >= 0: cddlib then never sees an empty matrix.
+       A row b - a.x >= 0 holds the homogeneous h.x <= 0 as (0, -h).  */
+    A = dd_CreateMatrix(1 + ne + nh, d + 1);
+    if (A == NULL)
+    {
+        status = cdd_fail(err, "dd_CreateMatrix", e);
+        goto cleanup;
+    }
+    A->representation = dd_Inequality;
+    A->numbtype = dd_Rational;
+    mpq_set_ui(A->matrix[0][0], 1, 1);
+    r = 1;
+    for (i = 0; i < ne; i++, r++)
+    {
+        put_row(A->matrix[r], E, i, -1, d);
+        set_addelem(A->linset, r + 1);
+    }
+    for (i = 0; i < nh; i++, r++)
+        put_row(A->matrix[r], H, i, -1, d);
+
+    poly = dd_DDMatrix2Poly(A, &e);
+    if (e != dd_NoError || poly == NULL)
+    {
+        status = cdd_fail(err, "dd_DDMatrix2Poly", e);
+        goto cleanup;
+    }
+    G = dd_CopyGenerators(poly);
+    if (G == NULL)
+    {
+        status = cdd_fail(err, "dd_CopyGenerators", e);
+        goto cleanup;
+    }
+    split_rows(lines, rays, G, d, 0);
+
+cleanup:
+    if (G != NULL)
+        dd_FreeMatrix(G);
+    if (poly != NULL)
+        dd_FreePolyhedra(poly);
+    if (A != NULL)
+        dd_FreeMatrix(A);
+    return status;
+}
+
+int
+_wc_cdd_v_to_h(fmpq_mat_t E, fmpq_mat_t H, slong d, const fmpq_mat_t rays,
+               const fmpq_mat_t lines, wc_error_t err)
+{
+    dd_MatrixPtr A = NULL, I = NULL;
+    dd_PolyhedraPtr poly = NULL;
+    dd_ErrorType e = dd_NoError;
+    slong nr = rows_of(rays), nl = rows_of(lines), i, r = 0;
+    int status = WC_OK;
+
+    wc_init();
+    /* Row 0 is the origin, the apex: a generator row (1, 0..0).  */
+    A = dd_CreateMatrix(1 + nr + nl, d + 1);
+    if (A == NULL)
+    {
+        status = cdd_fail(err, "dd_CreateMatrix", e);
+        goto cleanup;
+    }
+    A->representation = dd_Generator;
+    A->numbtype = dd_Rational;
+    mpq_set_ui(A->matrix[0][0], 1, 1);
+    r = 1;
+    for (i = 0; i < nl; i++, r++)
+    {
+        put_row(A->matrix[r], lines, i, 1, d);
+        set_addelem(A->linset, r + 1);
+    }
+    for (i = 0; i < nr; i++, r++)
+        put_row(A->matrix[r], rays, i, 1, d);
+
+    poly = dd_DDMatrix2Poly(A, &e);
+    if (e != dd_NoError || poly == NULL)
+    {
+        status = cdd_fail(err, "dd_DDMatrix2Poly", e);
+        goto cleanup;
+    }
+    I = dd_CopyInequalities(poly);
+    if (I == NULL)
+    {
+        status = cdd_fail(err, "dd_CopyInequalities", e);
+        goto cleanup;
+    }
+    /* b - a.x >= 0 with b = 0 is our h.x <= 0 with h = a: negate back.
+       A row with b != 0 can only be the trivial 1 >= 0; split_rows drops
+       it.  */
+    split_rows(E, H, I, d, 1);
+
+cleanup:
+    if (I != NULL)
+        dd_FreeMatrix(I);
+    if (poly != NULL)
+        dd_FreePolyhedra(poly);
+    if (A != NULL)
+        dd_FreeMatrix(A);
+    return status;
+}

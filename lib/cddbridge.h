@@ -1,0 +1,30 @@
+/* cddbridge.h -- the only door to cddlib (GMP build).  Private.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Cones here are homogeneous: { x : E x = 0, H x <= 0 } and
+   pos(rays) + span(lines), rows of fmpq matrices with d columns.  Outputs
+   are (re)initialised by the callee and must be fmpq_mat_clear'ed by the
+   caller even on failure.  */
+
+#ifndef WC_CDDBRIDGE_H
+#define WC_CDDBRIDGE_H
+
+#include <flint/fmpq_mat.h>
+
+#include "error.h"
+
+/* rays, lines := a minimal generating system of { x : E x = 0, H x <= 0 }.
+   E or H may be NULL.  Returns WC_OK or WC_EINTERNAL.  */
+int _wc_cdd_h_to_v(fmpq_mat_t rays, fmpq_mat_t lines, slong d,
+                   const fmpq_mat_t E, const fmpq_mat_t H, wc_error_t err);
+
+/* E, H := a minimal description of pos(rays) + span(lines): E x = 0 for
+   the linear hull, H x <= 0 for the facets.  rays or lines may be NULL.  */
+int _wc_cdd_v_to_h(fmpq_mat_t E, fmpq_mat_t H, slong d,
+                   const fmpq_mat_t rays, const fmpq_mat_t lines,
+                   wc_error_t err);
+
+#endif

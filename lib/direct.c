@@ -1,0 +1,149 @@
+/* direct.c -- the direct route to W(x): a Minkowski sum in R^3.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Table 2 never couples a with c, and g = M nudot - J c, so
+   W(x) = M V_x + (-J) D_x with V_x = { nudot : J^T nudot satisfies the
+   a-constraints of x } (an NNC cone in R^3) and D_x the closed cone of
+   the friction-cone edges of x.  All work is in dimension 3, whatever n.  */
+
+#include <config.h>
+
+#include "wrenchcone.h"
+
+/* Append row h (3 entries) times sign to A, growing it by one row.  */
+static void
+append_row(fmpq_mat_t A, const fmpq_mat_t J, slong col, int sign)
+{
+    slong r = fmpq_mat_nrows(A), j, i;
+    fmpq_mat_t B;
+
+    fmpq_mat_init(B, r + 1, 3);
+    for (i = 0; i < r; i++)
+        for (j = 0; j < 3; j++)
+            fmpq_set(fmpq_mat_entry(B, i, j), fmpq_mat_entry(A, i, j));
+    for (j = 0; j < 3; j++)
+    {
+        fmpq_set(fmpq_mat_entry(B, r, j), fmpq_mat_entry(J, j, col));
+        if (sign < 0)
+            fmpq_neg(fmpq_mat_entry(B, r, j), fmpq_mat_entry(B, r, j));
+    }
+    fmpq_mat_swap(A, B);
+    fmpq_mat_clear(B);
+}
+
+int
+wc_wrench_cone_direct(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
+                      const char * mode, wc_error_t err)
+{
+    slong n = P->n, i, j, q = 0;
+    fmpq_mat_t J, M, Eq, Le, Lt, Q, Vr;
+    fmpq e[4];
+    wc_cone_t V;
+    int status;
+
+    fmpq_mat_init(J, 3, 2 * n);
+    fmpq_mat_init(M, 3, 3);
+    fmpq_mat_init(Eq, 0, 3);
+    fmpq_mat_init(Le, 0, 3);
+    fmpq_mat_init(Lt, 0, 3);
+    fmpq_mat_init(Q, 2 * n, 3);
+    for (j = 0; j < 4; j++)
+        fmpq_init(e + j);
+    wc_cone_init(V, 3);
+    wc_model_J(J, P);
+    wc_model_M(M, P);
+
+    /* V_x in the convention h . nudot <= 0 (or = 0, or < 0), with
+       a_in = J_in . nudot and a_it = J_it . nudot.  */
+    for (i = 0; i < n; i++)
+    {
+        slong cn = i, ct = n + i, k, ne;
+
+        switch (mode[i])
+        {
+        case 's': append_row(Le, J, cn, -1); break;             /* a_n >= 0 */
+        case 'a': append_row(Lt, J, cn, 1); break;              /* a_n < 0 */
+        case 'u': break;
+        case 'l': append_row(Eq, J, cn, 1);
+                  append_row(Lt, J, ct, -1); break;             /* a_t > 0 */
+        case 'r': append_row(Eq, J, cn, 1);
+                  append_row(Lt, J, ct, 1); break;              /* a_t < 0 */
+        case 'n': append_row(Eq, J, cn, 1);
+                  append_row(Eq, J, ct, 1); break;
+        case 'm': append_row(Eq, J, cn, 1); break;
+        default: break;
+        }
+        /* D_x: friction-cone edges (c_n, c_t), mapped by -J.  */
+        ne = wc_friction_edges(e, P->fixels + i, mode[i]);
+        for (k = 0; k < ne; k++, q++)
+            for (j = 0; j < 3; j++)
+            {
+                fmpq * x = fmpq_mat_entry(Q, q, j);
+
+                fmpq_mul(x, e + 2 * k, fmpq_mat_entry(J, j, cn));
+                fmpq_addmul(x, e + 2 * k + 1, fmpq_mat_entry(J, j, ct));
+                fmpq_neg(x, x);
+            }
+    }
+    {
+        fmpq_mat_t Q2;
+
+        fmpq_mat_init(Q2, q, 3);
+        for (i = 0; i < q; i++)
+            for (j = 0; j < 3; j++)
+                fmpq_set(fmpq_mat_entry(Q2, i, j), fmpq_mat_entry(Q, i, j));
+        fmpq_mat_swap(Q, Q2);
+        fmpq_mat_clear(Q2);
+    }
+
+    status = wc_cone_set_hrep(V, Eq, Le, Lt, err);
+    if (status != WC_OK)
+        goto cleanup;
+    status = wc_cone_image_sum(W, M, V, Q, err);
+    if (status != WC_OK)
+        goto cleanup;
+
+    if (trace != NULL)
+    {
+        wc_trace_add(trace, "J", J, "wrench matrix, columns n_1..n_%ld, t_1..t_%ld",
+                     (long) n, (long) n);
+        wc_trace_add(trace, "M", M, "inertia matrix diag(m, m, I)");
+        wc_trace_add(trace, "V_x =", Eq, "rows h: h . nudot = 0 (a_in = 0, a_it = 0 rows of J^T)");
+        wc_trace_add(trace, "V_x <=", Le, "rows h: h . nudot <= 0");
+        wc_trace_add(trace, "V_x <", Lt, "rows h: h . nudot < 0 (strict)");
+        fmpq_mat_init(Vr, fmpz_mat_nrows(V->rays), 3);
+        fmpq_mat_set_fmpz_mat(Vr, V->rays);
+        wc_trace_add(trace, "rays of cl V_x", Vr, V->empty ? "V_x is empty"
+                     : "%ld of %ld faces of cl V_x belong to V_x",
+                     (long) (V->nfaces - wc_cone_excluded_faces(V)),
+                     (long) V->nfaces);
+        fmpq_mat_clear(Vr);
+        wc_trace_add(trace, "-J D_x", Q, "rows: friction-cone edges as wrenches");
+    }
+
+cleanup:
+    if (status != WC_OK)
+        wc_cone_set_empty(W);
+    fmpq_mat_clear(J);
+    fmpq_mat_clear(M);
+    fmpq_mat_clear(Eq);
+    fmpq_mat_clear(Le);
+    fmpq_mat_clear(Lt);
+    fmpq_mat_clear(Q);
+    for (j = 0; j < 4; j++)
+        fmpq_clear(e + j);
+    wc_cone_clear(V);
+    return status;
+}
+
+int
+wc_wrench_cone(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
+               const char * mode, wc_method method, wc_error_t err)
+{
+    if (method == WC_METHOD_PAPER)
+        return wc_wrench_cone_paper(W, trace, P, mode, err);
+    return wc_wrench_cone_direct(W, trace, P, mode, err);
+}

@@ -1,0 +1,384 @@
+/* print.c -- text, JSON and cddlib writers.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.  */
+
+#include <config.h>
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "wrenchcone.h"
+
+/* Row i of an fmpz_mat (FLINT 2.9 has no fmpz_mat_row).  */
+#define WC_ROW(A, i) ((A)->rows[i])
+
+static int
+done(FILE * out)
+{
+    return ferror(out) ? WC_EINTERNAL : WC_OK;
+}
+
+void
+wc_fprint_fmpq(FILE * out, const fmpq_t x)
+{
+    char * s = fmpq_get_str(NULL, 10, x);
+
+    fputs(s, out);
+    flint_free(s);
+}
+
+void
+wc_fprint_json_string(FILE * out, const char * s)
+{
+    putc('"', out);
+    for (; *s != '\0'; s++)
+    {
+        unsigned char c = (unsigned char) *s;
+
+        if (c == '"' || c == '\\')
+            fprintf(out, "\\%c", c);
+        else if (c == '\n')
+            fputs("\\n", out);
+        else if (c == '\t')
+            fputs("\\t", out);
+        else if (c < 0x20)
+            fprintf(out, "\\u%04x", c);
+        else
+            putc(c, out);
+    }
+    putc('"', out);
+}
+
+static void
+json_fmpz(FILE * out, const fmpz_t x)
+{
+    char * s = fmpz_get_str(NULL, 10, x);
+
+    fprintf(out, "\"%s\"", s);
+    flint_free(s);
+}
+
+static void
+json_rows(FILE * out, const fmpz_mat_t A)
+{
+    slong i, j;
+
+    putc('[', out);
+    for (i = 0; i < fmpz_mat_nrows(A); i++)
+    {
+        fputs(i ? ", [" : "[", out);
+        for (j = 0; j < fmpz_mat_ncols(A); j++)
+        {
+            if (j)
+                fputs(", ", out);
+            json_fmpz(out, fmpz_mat_entry(A, i, j));
+        }
+        putc(']', out);
+    }
+    putc(']', out);
+}
+
+int
+wc_cone_fprint_json(FILE * out, const wc_cone_t C)
+{
+    slong f, i;
+
+    if (C->empty)
+    {
+        fputs("{\"empty\": true}", out);
+        return done(out);
+    }
+    fprintf(out, "{\"empty\": false, \"dim\": %ld, \"lineality_dim\": %ld, "
+            "\"inequalities\": ", (long) C->dim, (long) C->lineality_dim);
+    json_rows(out, C->ineqs);
+    fputs(", \"equalities\": ", out);
+    json_rows(out, C->eqs);
+    fputs(", \"rays\": ", out);
+    json_rows(out, C->rays);
+    fputs(", \"lines\": ", out);
+    json_rows(out, C->lines);
+    fputs(", \"faces\": [", out);
+    for (f = 0; f < C->nfaces; f++)
+    {
+        const wc_face_struct * F = C->faces + f;
+
+        fprintf(out, "%s{\"dim\": %ld, \"rays\": [", f ? ", " : "",
+                (long) F->dim);
+        for (i = 0; i < F->nrays; i++)
+            fprintf(out, "%s%ld", i ? ", " : "", (long) F->rays[i]);
+        fprintf(out, "], \"included\": %s}", F->included ? "true" : "false");
+    }
+    fputs("]}", out);
+    return done(out);
+}
+
+/* Rows of A, right-aligned per column, each line prefixed.  */
+static void
+text_rows(FILE * out, const fmpz_mat_t A, const char * indent,
+          const char * tag)
+{
+    slong m = fmpz_mat_nrows(A), d = fmpz_mat_ncols(A), i, j;
+    size_t * w = calloc((size_t) d + 1, sizeof(size_t));
+
+    for (i = 0; i < m; i++)
+        for (j = 0; j < d; j++)
+        {
+            size_t l = fmpz_sizeinbase(fmpz_mat_entry(A, i, j), 10) + 1;
+
+            if (w != NULL && l > w[j])
+                w[j] = l;
+        }
+    for (i = 0; i < m; i++)
+    {
+        fprintf(out, "%s  %s%-3ld", indent, tag, (long) i);
+        for (j = 0; j < d; j++)
+        {
+            char * s = fmpz_get_str(NULL, 10, fmpz_mat_entry(A, i, j));
+
+            fprintf(out, " %*s", w != NULL ? (int) w[j] : 0, s);
+            flint_free(s);
+        }
+        putc('\n', out);
+    }
+    free(w);
+}
+
+int
+wc_cone_fprint_text(FILE * out, const wc_cone_t C, const char * indent)
+{
+    slong f, i, excl;
+
+    if (C->empty)
+    {
+        fprintf(out, "%sempty (no wrench is consistent with this mode)\n",
+                indent);
+        return done(out);
+    }
+    excl = wc_cone_excluded_faces(C);
+    fprintf(out, "%sdimension %ld, lineality %ld, %s", indent, (long) C->dim,
+            (long) C->lineality_dim, excl == 0 ? "closed" : "not closed");
+    if (excl > 0)
+        fprintf(out, ": %ld of %ld faces of the closure excluded",
+                (long) excl, (long) C->nfaces);
+    putc('\n', out);
+    fprintf(out, "%srays of the closure:%s\n", indent,
+            fmpz_mat_nrows(C->rays) ? "" : " none");
+    text_rows(out, C->rays, indent, "r");
+    if (C->lineality_dim > 0)
+    {
+        fprintf(out, "%slines:\n", indent);
+        text_rows(out, C->lines, indent, "l");
+    }
+    fprintf(out, "%sfacets (h . g <= 0):%s\n", indent,
+            fmpz_mat_nrows(C->ineqs) ? "" : " none");
+    text_rows(out, C->ineqs, indent, "h");
+    if (fmpz_mat_nrows(C->eqs) > 0)
+    {
+        fprintf(out, "%sequalities (e . g = 0):\n", indent);
+        text_rows(out, C->eqs, indent, "e");
+    }
+    fprintf(out, "%sfaces (by their rays):\n", indent);
+    for (f = 0; f < C->nfaces; f++)
+    {
+        const wc_face_struct * F = C->faces + f;
+        int col = 0;
+
+        col += fprintf(out, "%s  dim %ld  {", indent, (long) F->dim);
+        for (i = 0; i < F->nrays; i++)
+            col += fprintf(out, "%sr%ld", i ? " " : "", (long) F->rays[i]);
+        col += fprintf(out, "}");
+        fprintf(out, "%*s%s\n", col < 28 ? 28 - col : 1, "",
+                F->included ? "included" : "excluded");
+    }
+    return done(out);
+}
+
+static void
+cdd_row(FILE * out, const char * lead, const fmpz * v, slong d, int sign)
+{
+    slong j;
+    fmpz_t t;
+
+    fmpz_init(t);
+    fputs(lead, out);
+    for (j = 0; j < d; j++)
+    {
+        char * s;
+
+        fmpz_mul_si(t, v + j, sign);
+        s = fmpz_get_str(NULL, 10, t);
+        fprintf(out, " %s", s);
+        flint_free(s);
+    }
+    putc('\n', out);
+    fmpz_clear(t);
+}
+
+static void
+cdd_linearity(FILE * out, slong first, slong count)
+{
+    slong i;
+
+    if (count == 0)
+        return;
+    fprintf(out, "linearity %ld", (long) count);
+    for (i = 0; i < count; i++)
+        fprintf(out, " %ld", (long) (first + i));
+    putc('\n', out);
+}
+
+int
+wc_cone_fprint_cdd(FILE * out, const wc_cone_t C, const char * title,
+                   int which)
+{
+    slong d = C->d, f, i, m, q, k, l;
+
+    if (title != NULL)
+        fprintf(out, "* %s\n", title);
+    if (C->empty)
+    {
+        fputs("* the cone is empty\n", out);
+        if (which & 1)
+        {
+            /* -1 >= 0: no point satisfies it.  */
+            fprintf(out, "H-representation\nbegin\n 1 %ld rational\n -1",
+                    (long) d + 1);
+            for (i = 0; i < d; i++)
+                fputs(" 0", out);
+            fputs("\nend\n", out);
+        }
+        if (which & 2)
+            fprintf(out, "V-representation\nbegin\n 0 %ld rational\nend\n",
+                    (long) d + 1);
+        return done(out);
+    }
+    m = fmpz_mat_nrows(C->ineqs);
+    q = fmpz_mat_nrows(C->eqs);
+    k = fmpz_mat_nrows(C->rays);
+    l = fmpz_mat_nrows(C->lines);
+    if (wc_cone_excluded_faces(C) == 0)
+        fputs("* the cone is closed: it equals the polyhedron below\n", out);
+    else
+    {
+        fputs("* the cone is NOT closed: below is its closure; these faces of the\n"
+              "* closure are not in the cone (rays numbered 0.. in V-representation\n"
+              "* order after the apex row):\n", out);
+        for (f = 0; f < C->nfaces; f++)
+        {
+            const wc_face_struct * F = C->faces + f;
+
+            if (F->included)
+                continue;
+            fprintf(out, "*   excluded face of dim %ld, rays {", (long) F->dim);
+            for (i = 0; i < F->nrays; i++)
+                fprintf(out, "%s%ld", i ? " " : "", (long) F->rays[i]);
+            fputs("}\n", out);
+        }
+    }
+    if (which & 1)
+    {
+        fputs("H-representation\n", out);
+        cdd_linearity(out, m + 1, q);
+        fprintf(out, "begin\n %ld %ld rational\n", (long) (m + q), (long) d + 1);
+        for (i = 0; i < m; i++)
+            cdd_row(out, " 0", WC_ROW(C->ineqs, i), d, -1);
+        for (i = 0; i < q; i++)
+            cdd_row(out, " 0", WC_ROW(C->eqs, i), d, 1);
+        fputs("end\n", out);
+    }
+    if (which & 2)
+    {
+        fputs("V-representation\n", out);
+        cdd_linearity(out, k + 2, l);
+        fprintf(out, "begin\n %ld %ld rational\n", (long) (1 + k + l),
+                (long) d + 1);
+        fputs(" 1", out);
+        for (i = 0; i < d; i++)
+            fputs(" 0", out);
+        putc('\n', out);
+        for (i = 0; i < k; i++)
+            cdd_row(out, " 0", WC_ROW(C->rays, i), d, 1);
+        for (i = 0; i < l; i++)
+            cdd_row(out, " 0", WC_ROW(C->lines, i), d, 1);
+        fputs("end\n", out);
+    }
+    return done(out);
+}
+
+int
+wc_trace_fprint_text(FILE * out, const wc_trace_t T, const char * prefix)
+{
+    slong e, i, j;
+
+    for (e = 0; e < T->len; e++)
+    {
+        const wc_trace_entry_struct * t = T->entries + e;
+        slong r = fmpq_mat_nrows(t->m), c = fmpq_mat_ncols(t->m);
+        size_t * w = calloc((size_t) c + 1, sizeof(size_t));
+
+        fprintf(out, "%s%s (%ld x %ld)%s%s\n", prefix, t->name, (long) r,
+                (long) c, t->note ? ": " : "", t->note ? t->note : "");
+        for (i = 0; i < r; i++)
+            for (j = 0; j < c; j++)
+            {
+                char * s = fmpq_get_str(NULL, 10, fmpq_mat_entry(t->m, i, j));
+
+                if (w != NULL && strlen(s) > w[j])
+                    w[j] = strlen(s);
+                flint_free(s);
+            }
+        for (i = 0; i < r; i++)
+        {
+            fprintf(out, "%s  [", prefix);
+            for (j = 0; j < c; j++)
+            {
+                char * s = fmpq_get_str(NULL, 10, fmpq_mat_entry(t->m, i, j));
+
+                fprintf(out, " %*s", w != NULL ? (int) w[j] : 0, s);
+                flint_free(s);
+            }
+            fputs(" ]\n", out);
+        }
+        free(w);
+    }
+    return done(out);
+}
+
+int
+wc_trace_fprint_json(FILE * out, const wc_trace_t T)
+{
+    slong e, i, j;
+
+    putc('[', out);
+    for (e = 0; e < T->len; e++)
+    {
+        const wc_trace_entry_struct * t = T->entries + e;
+        slong r = fmpq_mat_nrows(t->m), c = fmpq_mat_ncols(t->m);
+
+        fputs(e ? ", {\"name\": " : "{\"name\": ", out);
+        wc_fprint_json_string(out, t->name);
+        if (t->note != NULL)
+        {
+            fputs(", \"note\": ", out);
+            wc_fprint_json_string(out, t->note);
+        }
+        fprintf(out, ", \"rows\": %ld, \"cols\": %ld, \"matrix\": [",
+                (long) r, (long) c);
+        for (i = 0; i < r; i++)
+        {
+            fputs(i ? ", [" : "[", out);
+            for (j = 0; j < c; j++)
+            {
+                fputs(j ? ", \"" : "\"", out);
+                wc_fprint_fmpq(out, fmpq_mat_entry(t->m, i, j));
+                putc('"', out);
+            }
+            putc(']', out);
+        }
+        fputs("]}", out);
+    }
+    putc(']', out);
+    return done(out);
+}

@@ -1,0 +1,50 @@
+/* print.h -- writers: readable text, canonical JSON (SPEC 4.1), cddlib.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Writers write only to the stream they are given.  Each returns WC_OK,
+   or WC_EINTERNAL when the stream reports an error.  */
+
+#ifndef WC_PRINT_H
+#define WC_PRINT_H
+
+#include <stdio.h>
+
+#include "cone.h"
+#include "wrench.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A rational as text, "p/q" or "p" in lowest terms.  */
+void wc_fprint_fmpq(FILE * out, const fmpq_t x);
+
+/* s as a JSON string literal, with quotes and escapes.  */
+void wc_fprint_json_string(FILE * out, const char * s);
+
+/* The CONE object of SPEC 4.1, on one line, no newline.  */
+int wc_cone_fprint_json(FILE * out, const wc_cone_t C);
+
+/* A readable description of C, each line starting with indent.  */
+int wc_cone_fprint_text(FILE * out, const wc_cone_t C, const char * indent);
+
+/* C in cddlib's format with rationals: which = 1 the H-representation
+   (.ine) of the closure, 2 the V-representation (.ext), 3 both, H first.
+   Strictness, which cdd files cannot express, is given in comment lines
+   (starting with '*') before the representations; title goes there too.  */
+int wc_cone_fprint_cdd(FILE * out, const wc_cone_t C, const char * title,
+                       int which);
+
+/* A trace as text (each line starting with prefix) or as a JSON array
+   of {"name", "note", "rows", "cols", "matrix"} objects.  */
+int wc_trace_fprint_text(FILE * out, const wc_trace_t T, const char * prefix);
+int wc_trace_fprint_json(FILE * out, const wc_trace_t T);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

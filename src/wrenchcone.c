@@ -1,0 +1,356 @@
+/* wrenchcone.c -- the command-line program.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Results go to stdout, only after the whole answer is computed;
+   diagnostics go to stderr as "wrenchcone: FILE:LINE:COL: message".
+   Exit status: 0 success, 1 bad input, 2 bad usage, 3 internal or I/O
+   failure, 4 a check found a disagreement (SPEC 4).  */
+
+#include <config.h>
+
+#include <errno.h>
+#include <getopt.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "wrenchcone.h"
+
+#define PROG "wrenchcone"
+
+typedef enum { FMT_TEXT, FMT_JSON, FMT_CDD, FMT_INE, FMT_EXT } out_format;
+
+static void
+usage(FILE * out)
+{
+    fputs("Usage: " PROG " COMMAND [OPTIONS] PROBLEM [ARGS]\n"
+          "Exact wrench cones for planar rigid-body contact tasks.\n"
+          "\n"
+          "Commands:\n"
+          "  cone PROBLEM MODE    the exact cone of external wrenches consistent with\n"
+          "                       the contact mode MODE (one letter per fixel)\n"
+          "\n"
+          "PROBLEM is a .wc problem file (see wrenchcone(5)); '-' reads standard input.\n"
+          "Options of every command: --format=text|json, -h/--help, -V/--version.\n"
+          "Run '" PROG " COMMAND --help' for a command's options.\n"
+          "\n"
+          "Exit status: 0 success (an empty cone is an answer), 1 bad input,\n"
+          "2 bad usage, 3 internal or I/O failure, 4 disagreement (compare, verify).\n",
+          out);
+}
+
+static void
+usage_cone(FILE * out)
+{
+    fputs("Usage: " PROG " cone [OPTIONS] PROBLEM MODE\n"
+          "Print W(MODE), the exact cone of external wrenches (fx, fy, torque)\n"
+          "consistent with MODE, in canonical form: closure facets, rays, and every\n"
+          "face of the closure with whether it belongs to the cone.\n"
+          "\n"
+          "MODE has one letter per fixel, in file order (paper Table 2):\n"
+          "  touching fixels: s separate, l slide left, r slide right, n roll,\n"
+          "                   m maintain contact;\n"
+          "  near fixels:     s separate, a approach, u unconstrained.\n"
+          "\n"
+          "Options:\n"
+          "  --format=FMT     text (default), json (SPEC 4.1), cdd (cddlib .ine then\n"
+          "                   .ext with rationals), ine, or ext\n"
+          "  --method=METHOD  direct (default; Minkowski sum in R^3) or paper (the\n"
+          "                   paper's Section 5 route); both print the same bytes\n"
+          "  --trace          also print every intermediate matrix of the route\n"
+          "  -h, --help       print this help and exit\n"
+          "  -V, --version    print versions and exit\n", out);
+}
+
+static void
+version(void)
+{
+    printf(PROG " %s\n"
+           "GMP %s, FLINT %s, cddlib %s\n"
+           "Copyright (C) 2026 the wrenchcone authors.\n"
+           "License GPLv2+: GNU GPL version 2 or later.\n"
+           "This is free software: you are free to change and redistribute it.\n"
+           "There is NO WARRANTY, to the extent permitted by law.\n",
+           wc_version(), wc_gmp_version(), wc_flint_version(),
+           wc_cdd_version());
+}
+
+/* Report err on stderr and return its status.  */
+static int
+report(const wc_error_t err, int status)
+{
+    char * s = wc_error_format(err);
+
+    fprintf(stderr, PROG ": %s\n", s != NULL ? s : "out of memory");
+    free(s);
+    return status;
+}
+
+static int
+usage_error(const char * cmd, const char * fmt, const char * arg)
+{
+    fputs(PROG ": ", stderr);
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\nTry '" PROG "%s%s --help' for more information.\n",
+            cmd ? " " : "", cmd ? cmd : "");
+    return WC_EUSAGE;
+}
+
+/* Read the whole of path ("-": stdin) into a malloc'd buffer.  */
+static int
+read_all(char ** text, size_t * len, const char * path, wc_error_t err)
+{
+    FILE * f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+    size_t alloc = 4096, n = 0, r;
+    char * buf = NULL;
+    int status = WC_OK;
+
+    if (f == NULL)
+        return wc_error_set(err, WC_EINPUT, path, 0, 0, "cannot open: %s",
+                            strerror(errno));
+    buf = malloc(alloc);
+    while (buf != NULL && (r = fread(buf + n, 1, alloc - n, f)) > 0)
+    {
+        n += r;
+        if (n == alloc)
+        {
+            char * p = realloc(buf, alloc *= 2);
+
+            if (p == NULL)
+                free(buf);
+            buf = p;
+        }
+    }
+    if (buf == NULL)
+        status = wc_error_set(err, WC_EINTERNAL, path, 0, 0, "out of memory");
+    else if (ferror(f))
+        status = wc_error_set(err, WC_EINPUT, path, 0, 0, "read error: %s",
+                              strerror(errno));
+    if (f != stdin)
+        fclose(f);
+    if (status != WC_OK)
+    {
+        free(buf);
+        return status;
+    }
+    *text = buf;
+    *len = n;
+    return WC_OK;
+}
+
+static int
+load_problem(wc_problem_t P, const char * path, wc_error_t err)
+{
+    char * text = NULL;
+    size_t len = 0;
+    int status = read_all(&text, &len, path, err);
+
+    if (status == WC_OK)
+        status = wc_problem_parse(P, text, len,
+                                  strcmp(path, "-") == 0 ? "<stdin>" : path,
+                                  err);
+    free(text);
+    return status;
+}
+
+static int
+parse_format(out_format * f, const char * s, int allow_cdd)
+{
+    if (strcmp(s, "text") == 0)
+        *f = FMT_TEXT;
+    else if (strcmp(s, "json") == 0)
+        *f = FMT_JSON;
+    else if (allow_cdd && strcmp(s, "cdd") == 0)
+        *f = FMT_CDD;
+    else if (allow_cdd && strcmp(s, "ine") == 0)
+        *f = FMT_INE;
+    else if (allow_cdd && strcmp(s, "ext") == 0)
+        *f = FMT_EXT;
+    else
+        return 0;
+    return 1;
+}
+
+/* Flush stdout; a failed write is an I/O failure (exit 3).  */
+static int
+finish_output(void)
+{
+    if (fflush(stdout) != 0 || ferror(stdout))
+    {
+        fprintf(stderr, PROG ": write error: %s\n", strerror(errno));
+        return WC_EINTERNAL;
+    }
+    return WC_OK;
+}
+
+enum { OPT_FORMAT = 256, OPT_METHOD, OPT_TRACE };
+
+static int
+cmd_cone(int argc, char ** argv)
+{
+    static const struct option opts[] = {
+        { "format", required_argument, NULL, OPT_FORMAT },
+        { "method", required_argument, NULL, OPT_METHOD },
+        { "trace", no_argument, NULL, OPT_TRACE },
+        { "help", no_argument, NULL, 'h' },
+        { "version", no_argument, NULL, 'V' },
+        { NULL, 0, NULL, 0 }
+    };
+    out_format fmt = FMT_TEXT;
+    wc_method method = WC_METHOD_DIRECT;
+    int trace_on = 0, c, status;
+    const char * path, * mode;
+    wc_problem_t P;
+    wc_error_t err;
+    wc_cone_t W;
+    wc_trace_t T;
+
+    opterr = 0;
+    while ((c = getopt_long(argc, argv, "hV", opts, NULL)) != -1)
+    {
+        switch (c)
+        {
+        case OPT_FORMAT:
+            if (!parse_format(&fmt, optarg, 1))
+                return usage_error("cone", "unknown format '%s' "
+                                   "(text, json, cdd, ine or ext)", optarg);
+            break;
+        case OPT_METHOD:
+            if (strcmp(optarg, "direct") == 0)
+                method = WC_METHOD_DIRECT;
+            else if (strcmp(optarg, "paper") == 0)
+                method = WC_METHOD_PAPER;
+            else
+                return usage_error("cone", "unknown method '%s' (direct or paper)",
+                                   optarg);
+            break;
+        case OPT_TRACE:
+            trace_on = 1;
+            break;
+        case 'h':
+            usage_cone(stdout);
+            return finish_output();
+        case 'V':
+            version();
+            return finish_output();
+        default:
+            return usage_error("cone", "unknown or incomplete option '%s'",
+                               argv[optind - 1]);
+        }
+    }
+    if (argc - optind != 2)
+        return usage_error("cone", argc - optind < 2
+                           ? "cone needs PROBLEM and MODE%s"
+                           : "cone takes PROBLEM and MODE only%s", "");
+    path = argv[optind];
+    mode = argv[optind + 1];
+
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_cone_init(W, 3);
+    wc_trace_init(T);
+    status = load_problem(P, path, err);
+    if (status == WC_OK)
+        status = wc_mode_check(P, mode, WC_TABLE_CONE, err);
+    if (status == WC_OK)
+        status = wc_wrench_cone(W, trace_on ? T : NULL, P, mode, method, err);
+    if (status != WC_OK)
+    {
+        report(err, status);
+        goto cleanup;
+    }
+
+    switch (fmt)
+    {
+    case FMT_TEXT:
+        if (trace_on)
+        {
+            printf("trace (%s route):\n", method == WC_METHOD_PAPER
+                   ? "paper, Section 5" : "direct, M V_x + (-J) D_x");
+            wc_trace_fprint_text(stdout, T, "  ");
+            putchar('\n');
+        }
+        printf("W(%s): wrench cone of mode %s\n", mode, mode);
+        wc_cone_fprint_text(stdout, W, "  ");
+        break;
+    case FMT_JSON:
+        fputs("{\"mode\": ", stdout);
+        wc_fprint_json_string(stdout, mode);
+        fputs(", \"cone\": ", stdout);
+        wc_cone_fprint_json(stdout, W);
+        if (trace_on)
+        {
+            fprintf(stdout, ", \"method\": \"%s\", \"trace\": ",
+                    method == WC_METHOD_PAPER ? "paper" : "direct");
+            wc_trace_fprint_json(stdout, T);
+        }
+        fputs("}\n", stdout);
+        break;
+    default:
+        {
+            size_t len = strlen(mode) + 64;
+            char * title = malloc(len);
+
+            if (title != NULL)
+                snprintf(title, len, "wrenchcone: W(%s), the wrench cone of mode %s",
+                         mode, mode);
+            if (trace_on)
+                wc_trace_fprint_text(stdout, T, "* ");
+            wc_cone_fprint_cdd(stdout, W, title, fmt == FMT_INE ? 1
+                               : fmt == FMT_EXT ? 2 : 3);
+            free(title);
+        }
+        break;
+    }
+    status = finish_output();
+
+cleanup:
+    wc_trace_clear(T);
+    wc_cone_clear(W);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}
+
+static const char * const planned[] = {
+    "modes", "feasible", "classify", "stability", "plan", "sweep", "draw",
+    "compare", "verify", NULL
+};
+
+int
+main(int argc, char ** argv)
+{
+    int status, i;
+
+    if (argc < 2)
+    {
+        usage(stderr);
+        return WC_EUSAGE;
+    }
+    if (strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0)
+    {
+        usage(stdout);
+        return finish_output();
+    }
+    if (strcmp(argv[1], "-V") == 0 || strcmp(argv[1], "--version") == 0)
+    {
+        version();
+        return finish_output();
+    }
+    if (strcmp(argv[1], "cone") == 0)
+        status = cmd_cone(argc - 1, argv + 1);
+    else
+    {
+        for (i = 0; planned[i] != NULL; i++)
+            if (strcmp(argv[1], planned[i]) == 0)
+                break;
+        status = usage_error(NULL, planned[i] != NULL
+                             ? "'%s' is not implemented in this version"
+                             : "unknown command '%s'", argv[1]);
+    }
+    flint_cleanup_master();
+    return status;
+}
