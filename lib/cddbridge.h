@@ -15,6 +15,7 @@
 #include <flint/fmpq_mat.h>
 
 #include "error.h"
+#include "cone.h"
 
 /* rays, lines := a minimal generating system of { x : E x = 0, H x <= 0 }.
    E or H may be NULL.  Returns WC_OK or WC_EINTERNAL.  */
@@ -26,5 +27,17 @@ int _wc_cdd_h_to_v(fmpq_mat_t rays, fmpq_mat_t lines, slong d,
 int _wc_cdd_v_to_h(fmpq_mat_t E, fmpq_mat_t H, slong d,
                    const fmpq_mat_t rays, const fmpq_mat_t lines,
                    wc_error_t err);
+
+/* wc_cone_set_hrep and wc_cone_set_generators with the conversion done
+   by cddlib even in dimension 3 (where hull3.c is the default): the paper
+   route uses cddlib throughout, so that comparing the two routes also
+   compares the two conversion kernels.  Defined in cone.c.  */
+int _wc_cone_set_hrep_kernel(wc_cone_t C, const fmpq_mat_t eqs,
+                             const fmpq_mat_t ineqs, const fmpq_mat_t strict,
+                             int use_cdd, wc_error_t err);
+int _wc_cone_set_generators_kernel(wc_cone_t C,
+                                   const fmpq_mat_t rays,
+                                   const fmpq_mat_t lines, int use_cdd,
+                                   wc_error_t err);
 
 #endif

@@ -24,6 +24,7 @@
 /* Row i of an fmpz_mat (FLINT 2.9 has no fmpz_mat_row).  */
 #define WC_ROW(A, i) ((A)->rows[i])
 #include "cddbridge.h"
+#include "hull3.h"
 
 /* ---------------------------------------------------------------------
    Small helpers on rows.  */
@@ -581,6 +582,14 @@ int
 wc_cone_set_hrep(wc_cone_t C, const fmpq_mat_t eqs, const fmpq_mat_t ineqs,
                  const fmpq_mat_t strict, wc_error_t err)
 {
+    return _wc_cone_set_hrep_kernel(C, eqs, ineqs, strict, 0, err);
+}
+
+int
+_wc_cone_set_hrep_kernel(wc_cone_t C, const fmpq_mat_t eqs,
+                         const fmpq_mat_t ineqs, const fmpq_mat_t strict,
+                         int use_cdd, wc_error_t err)
+{
     slong d = C->d, nh = nrows(ineqs), ns = nrows(strict), i, j, f;
     fmpq_mat_t H, rays, lines;
     fmpz_mat_t Sz;
@@ -600,7 +609,9 @@ wc_cone_set_hrep(wc_cone_t C, const fmpq_mat_t eqs, const fmpq_mat_t ineqs,
     fmpz_mat_init(Sz, ns, d);
 
     wc_cone_set_empty(C);
-    status = _wc_cdd_h_to_v(rays, lines, d, eqs, H, err);
+    status = (d == 3 && !use_cdd)
+        ? _wc_hull3_h_to_v(rays, lines, eqs, H, err)
+        : _wc_cdd_h_to_v(rays, lines, d, eqs, H, err);
     if (status != WC_OK)
         goto cleanup;
     set_closure(C, rays, lines, eqs, H);
@@ -633,6 +644,14 @@ int
 wc_cone_set_generators(wc_cone_t C, const fmpq_mat_t rays,
                        const fmpq_mat_t lines, wc_error_t err)
 {
+    return _wc_cone_set_generators_kernel(C, rays, lines, 0, err);
+}
+
+int
+_wc_cone_set_generators_kernel(wc_cone_t C, const fmpq_mat_t rays,
+                               const fmpq_mat_t lines, int use_cdd,
+                               wc_error_t err)
+{
     slong d = C->d;
     fmpq_mat_t E, H;
     int status;
@@ -640,7 +659,9 @@ wc_cone_set_generators(wc_cone_t C, const fmpq_mat_t rays,
     fmpq_mat_init(E, 0, d);
     fmpq_mat_init(H, 0, d);
     wc_cone_set_empty(C);
-    status = _wc_cdd_v_to_h(E, H, d, rays, lines, err);
+    status = (d == 3 && !use_cdd)
+        ? _wc_hull3_v_to_h(E, H, rays, lines, err)
+        : _wc_cdd_v_to_h(E, H, d, rays, lines, err);
     if (status == WC_OK)
         set_closure(C, rays, lines, E, H);
     fmpq_mat_clear(E);

@@ -49,19 +49,21 @@ int
 wc_error_vset(wc_error_t e, int status, const char * file, long line,
               long col, const char * fmt, va_list ap)
 {
-    char * f = NULL;
+    char * f = NULL, * m;
 
+    /* Format before freeing: the arguments may point into e itself.  */
     if (file != NULL)
     {
         f = malloc(strlen(file) + 1);
         if (f != NULL)
             strcpy(f, file);
     }
+    m = vformat(fmt, ap);
     wc_error_clear(e);
     e->file = f;
     e->line = line;
     e->col = col;
-    e->message = vformat(fmt, ap);
+    e->message = m;
     return status;
 }
 

@@ -240,7 +240,7 @@ wc_wrench_cone_paper(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
                 fmpq_set(fmpq_mat_entry(T, t, j), fmpq_mat_entry(F, i, j));
         }
     }
-    status = wc_cone_set_hrep(W, NULL, Fle, Flt, err);
+    status = _wc_cone_set_hrep_kernel(W, NULL, Fle, Flt, 1, err);
     if (status != WC_OK)
         goto cleanup;
 

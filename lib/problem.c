@@ -237,39 +237,102 @@ set_digits(fmpz_t f, const char * s, size_t a0, size_t a1, size_t b0,
     return 0;
 }
 
+/* The parts of a number as written: sign, the integer digits (or the
+   numerator) s[a0..a1), the fraction digits (or the denominator) s[b0..b1),
+   and the exponent.  */
+typedef struct
+{
+    int neg;
+    int fraction;       /* p/q rather than a decimal */
+    size_t a0, a1, b0, b1;
+    int eneg;
+    unsigned long e;    /* saturates just above WC_MAX_EXPONENT */
+}
+wc_numparts;
+
+/* Split s[0..len) into np: 0 when it is a number, 1 when it is not, 2
+   when it is but its exponent is out of range.  */
+static int
+scan_number(wc_numparts * np, const char * s, size_t len)
+{
+    size_t i = 0, e0;
+
+    memset(np, 0, sizeof *np);
+    if (i < len && (s[i] == '+' || s[i] == '-'))
+    {
+        np->neg = s[i] == '-';
+        i++;
+    }
+    np->a0 = i;
+    while (i < len && is_digit(s[i]))
+        i++;
+    np->a1 = i;
+    if (i < len && s[i] == '/')
+    {
+        np->fraction = 1;
+        np->b0 = ++i;
+        while (i < len && is_digit(s[i]))
+            i++;
+        np->b1 = i;
+        return np->a1 == np->a0 || np->b1 == np->b0 || i != len;
+    }
+    if (i < len && s[i] == '.')
+    {
+        np->b0 = ++i;
+        while (i < len && is_digit(s[i]))
+            i++;
+        np->b1 = i;
+    }
+    if (np->a1 == np->a0 && np->b1 == np->b0)
+        return 1;
+    if (i < len && (s[i] == 'e' || s[i] == 'E'))
+    {
+        i++;
+        if (i < len && (s[i] == '+' || s[i] == '-'))
+        {
+            np->eneg = s[i] == '-';
+            i++;
+        }
+        e0 = i;
+        while (i < len && is_digit(s[i]))
+        {
+            /* saturate: any value above the bound is as bad */
+            if (np->e <= WC_MAX_EXPONENT)
+                np->e = 10 * np->e + (unsigned long) (s[i] - '0');
+            i++;
+        }
+        if (i == e0)
+            return 1;
+    }
+    if (i != len)
+        return 1;
+    return np->e > WC_MAX_EXPONENT ? 2 : 0;
+}
+
 int
 wc_parse_number(fmpq_t x, const char * s, size_t len, wc_error_t err)
 {
+    wc_numparts np;
     fmpz_t num, den;
-    size_t i = 0, a0, a1, b0 = 0, b1 = 0;
-    int neg = 0;
+    size_t nfrac;
     int status = WC_OK;
+    int r = scan_number(&np, s, len);
 
+    if (r != 0)
+        return error_token(err, WC_EINPUT, NULL, 0, 0, r == 1
+                           ? "bad number '%s'"
+                           : "exponent out of range in '%s'", s, len);
     fmpz_init(num);
     fmpz_init(den);
-
-    if (i < len && (s[i] == '+' || s[i] == '-'))
+    if (np.fraction)
     {
-        neg = s[i] == '-';
-        i++;
-    }
-    a0 = i;
-    while (i < len && is_digit(s[i]))
-        i++;
-    a1 = i;
-
-    if (i < len && s[i] == '/')
-    {
-        i++;
-        b0 = i;
-        while (i < len && is_digit(s[i]))
-            i++;
-        b1 = i;
-        if (a1 == a0 || b1 == b0 || i != len)
-            goto bad;
-        if (set_digits(num, s, a0, a1, 0, 0) != 0
-            || set_digits(den, s, b0, b1, 0, 0) != 0)
-            goto nomem;
+        if (set_digits(num, s, np.a0, np.a1, 0, 0) != 0
+            || set_digits(den, s, np.b0, np.b1, 0, 0) != 0)
+        {
+            status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                  "out of memory");
+            goto cleanup;
+        }
         if (fmpz_is_zero(den))
         {
             status = error_token(err, WC_EINPUT, NULL, 0, 0,
@@ -279,77 +342,29 @@ wc_parse_number(fmpq_t x, const char * s, size_t len, wc_error_t err)
     }
     else
     {
-        unsigned long e = 0;
-        int eneg = 0;
-        size_t nfrac;
-
-        if (i < len && s[i] == '.')
+        if (set_digits(num, s, np.a0, np.a1, np.b0, np.b1) != 0)
         {
-            i++;
-            b0 = i;
-            while (i < len && is_digit(s[i]))
-                i++;
-            b1 = i;
+            status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                  "out of memory");
+            goto cleanup;
         }
-        if (a1 == a0 && b1 == b0)
-            goto bad;
-        if (i < len && (s[i] == 'e' || s[i] == 'E'))
-        {
-            size_t e0;
-
-            i++;
-            if (i < len && (s[i] == '+' || s[i] == '-'))
-            {
-                eneg = s[i] == '-';
-                i++;
-            }
-            e0 = i;
-            while (i < len && is_digit(s[i]))
-            {
-                /* saturate: any value above the bound is as bad */
-                if (e <= WC_MAX_EXPONENT)
-                    e = 10 * e + (unsigned long) (s[i] - '0');
-                i++;
-            }
-            if (i == e0)
-                goto bad;
-            if (i == len && e > WC_MAX_EXPONENT)
-            {
-                status = error_token(err, WC_EINPUT, NULL, 0, 0,
-                                     "exponent out of range in '%s'", s, len);
-                goto cleanup;
-            }
-        }
-        if (i != len)
-            goto bad;
-        if (set_digits(num, s, a0, a1, b0, b1) != 0)
-            goto nomem;
         /* value = digits * 10^(+-e - nfrac) */
-        nfrac = b1 - b0;
+        nfrac = np.b1 - np.b0;
         fmpz_set_ui(den, 10);
-        if (eneg)
-            fmpz_pow_ui(den, den, (ulong) (e + nfrac));
-        else if (e >= nfrac)
+        if (np.eneg)
+            fmpz_pow_ui(den, den, (ulong) (np.e + nfrac));
+        else if (np.e >= nfrac)
         {
-            fmpz_pow_ui(den, den, (ulong) (e - nfrac));
+            fmpz_pow_ui(den, den, (ulong) (np.e - nfrac));
             fmpz_mul(num, num, den);
             fmpz_one(den);
         }
         else
-            fmpz_pow_ui(den, den, (ulong) (nfrac - e));
+            fmpz_pow_ui(den, den, (ulong) (nfrac - np.e));
     }
-
-    if (neg)
+    if (np.neg)
         fmpz_neg(num, num);
     fmpq_set_fmpz_frac(x, num, den);
-    goto cleanup;
-
-bad:
-    status = error_token(err, WC_EINPUT, NULL, 0, 0, "bad number '%s'",
-                         s, len);
-    goto cleanup;
-nomem:
-    status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
 cleanup:
     fmpz_clear(num);
     fmpz_clear(den);
@@ -1232,8 +1247,9 @@ dupkey_same(const wc_dupkey * a, const wc_dupkey * b)
         && fmpz_equal(a->dir + 1, b->dir + 1);
 }
 
-/* Among the fixels before 'limit' whose normal is known, the smallest
-   index k of a fixel that repeats an earlier one (j), or -1.  */
+/* Among the fixels before 'limit' whose normal is known, find the
+   smallest index k of a fixel that repeats an earlier one, j (both -1 when
+   there is none).  WC_OK, or WC_EINTERNAL when out of memory.  */
 static int
 find_duplicate(const wc_parser * ps, slong limit, slong * k, slong * j)
 {
@@ -1273,11 +1289,10 @@ find_duplicate(const wc_parser * ps, slong limit, slong * k, slong * j)
         m++;
     }
     qsort(keys, (size_t) m, sizeof(wc_dupkey), dupkey_cmp);
-    /* equal keys are sorted by index: a run's first two are the earliest
-       pair of its class */
+    /* equal keys are sorted by index, so the first pair of a run has the
+       smallest later index of its class */
     for (i = 0; i + 1 < m; i++)
         if (dupkey_same(keys + i, keys + i + 1)
-            && (i == 0 || !dupkey_same(keys + i - 1, keys + i))
             && (*k < 0 || keys[i + 1].index < *k))
         {
             *k = keys[i + 1].index;

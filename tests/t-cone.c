@@ -19,6 +19,7 @@
 
 #include "wrenchcone.h"
 #include "testutil.h"
+#include "cddbridge.h"
 
 #define ROW(A, i) ((A)->rows[i])
 
@@ -234,6 +235,11 @@ check_random(void)
         wctest_fail("set_hrep: %s", err->message);
     if (!wc_cone_equal(C, D))
         wctest_fail("V -> H -> V changes the cone");
+    /* The two conversion kernels, hull3.c and cddlib, agree.  */
+    if (_wc_cone_set_generators_kernel(D, R, L, 1, err) != WC_OK)
+        wctest_fail("set_generators (cddlib): %s", err->message);
+    if (!wc_cone_equal(C, D))
+        wctest_fail("hull3 and cddlib disagree on a cone from generators");
     fmpq_mat_clear(A);
     fmpq_mat_clear(B);
     /* The same cone from its canonical rays, each scaled, plus redundant
@@ -266,6 +272,10 @@ check_random(void)
     rand_rows(S, wctest_randint(0, 3), 3);
     if (wc_cone_set_hrep(C, E, H, S, err) != WC_OK)
         wctest_fail("set_hrep: %s", err->message);
+    if (_wc_cone_set_hrep_kernel(D, E, H, S, 1, err) != WC_OK)
+        wctest_fail("set_hrep (cddlib): %s", err->message);
+    if (!wc_cone_equal(C, D))
+        wctest_fail("hull3 and cddlib disagree on an NNC cone");
     if (!C->empty)
     {
         check_canonical(C);

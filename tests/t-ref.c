@@ -279,9 +279,9 @@ check_one_fixel(void)
     wc_problem_clear(P);
 }
 
-/* Two touching fixels at one point with opposed normals (a part pinched
-   at a point): the tangents are opposed too, so a_2t = -a_1t and both
-   cannot slide the same way.  */
+/* Two touching fixels at one point, the centre of mass, with opposed
+   normals (0, 1) and (0, -2) (a part pinched at a point): the tangents
+   are opposed too, a_2t = -2 a_1t, so both cannot slide the same way.  */
 static void
 check_pinch(void)
 {
@@ -566,7 +566,7 @@ transformed_copy(wc_problem_t Q, const wc_problem_t P)
 static void
 check_random(void)
 {
-    slong iter, iters = wctest_iters(150);
+    slong iter, iters = wctest_iters(100);
 
     for (iter = 0; iter < iters; iter++)
     {

@@ -640,9 +640,10 @@ layout_points(wc_problem_struct * P, int layout)
                     fmpq_neg(across, s);
                 else
                     fmpq_set(across, s);
-                fmpq_zero(f->normal + 0);
-                fmpq_zero(f->normal + 1);
-                fmpq_set_si(f->normal + (side & 1), side < 2 ? 1 : -1, 1);
+                fmpq_set_si(f->normal + 0, side == 0 ? 1 : side == 2 ? -1 : 0,
+                            1);
+                fmpq_set_si(f->normal + 1, side == 1 ? 1 : side == 3 ? -1 : 0,
+                            1);
                 if (wctest_chance(1, 3))
                     scaled_copy(f->normal, f->normal, 0, 1);
             }

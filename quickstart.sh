@@ -1,0 +1,26 @@
+#!/bin/sh
+# quickstart.sh -- the README's first command: install the Debian packages
+# wrenchcone needs (when missing), generate the build system, configure,
+# build, and print a real example: the paper's Section 4 wrench cone.
+set -e
+cd "$(dirname "$0")"
+
+pkgs="build-essential autoconf automake libtool pkg-config libgmp-dev libmpfr-dev libflint-dev libcdd-dev"
+missing=
+for p in $pkgs; do
+    dpkg-query -W -f='${Status}' "$p" 2> /dev/null | grep -q 'ok installed' || missing="$missing $p"
+done
+if [ -n "$missing" ]; then
+    echo "quickstart: installing$missing"
+    if [ "$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi
+    $SUDO apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq $missing
+fi
+
+[ -x configure ] || autoreconf -fi
+[ -f Makefile ] || ./configure ${CONFIGURE_FLAGS:-}
+make -j"$(nproc 2> /dev/null || echo 2)"
+
+echo
+echo "\$ wrenchcone cone data/section4.wc na"
+./src/wrenchcone cone data/section4.wc na

@@ -1,0 +1,167 @@
+#!/bin/sh
+# cli-errors.sh -- bad input gives exit status 1, nothing on stdout and one
+# exact diagnostic on stderr; bad usage gives exit status 2 (SPEC 3, 4).
+#
+# Copyright (C) 2026 the wrenchcone authors.
+# This file is part of wrenchcone, free software under the GNU General
+# Public License, version 2 or (at your option) any later version.
+#
+# Run by make check with WRENCHCONE and top_srcdir in the environment.
+# Silent on success; prints each failing case and exits 1.
+
+: "${WRENCHCONE:?WRENCHCONE is not set}"
+: "${top_srcdir:?top_srcdir is not set}"
+
+bad="$top_srcdir/tests/bad"
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/cli-errors.XXXXXX") || exit 99
+trap 'rm -rf "$tmp"' 0
+trap 'exit 1' HUP INT TERM
+failures=0
+
+fail() {
+    printf 'FAIL: %s: %s\n' "$1" "$2"
+    failures=$((failures + 1))
+}
+
+# run INPUT ARGS...: run the program on ARGS with INPUT as stdin; sets
+# $status and leaves stdout and stderr in $tmp/out and $tmp/err.
+run() {
+    run_input=$1
+    shift
+    "$WRENCHCONE" "$@" <"$run_input" >"$tmp/out" 2>"$tmp/err"
+    status=$?
+}
+
+# expect_status NAME WANT: the last run's status is WANT and its stdout
+# is empty.
+expect_status() {
+    if [ "$status" -ne "$2" ]; then
+        fail "$1" "exit status $status, expected $2"
+    fi
+    if [ -s "$tmp/out" ]; then
+        fail "$1" "stdout is not empty:"
+        sed 's/^/    /' "$tmp/out"
+    fi
+}
+
+# expect_stderr NAME LINE: stderr is exactly LINE and a newline.
+expect_stderr() {
+    printf '%s\n' "$2" >"$tmp/want"
+    if ! cmp -s "$tmp/want" "$tmp/err"; then
+        fail "$1" "stderr differs"
+        printf '    expected: %s\n' "$2"
+        sed 's/^/    got:      /' "$tmp/err"
+    fi
+}
+
+# bad_file NAME MODE LINE:COL: MESSAGE -- the diagnostic for tests/bad/NAME.wc
+bad_file() {
+    file="$bad/$1.wc"
+    run /dev/null cone "$file" "$2"
+    expect_status "$1" 1
+    expect_stderr "$1" "wrenchcone: $file:$3"
+}
+
+# bad_mode NAME MODE COL: MESSAGE -- a mode rejected for tests/bad/modes.wc
+bad_mode() {
+    run /dev/null cone "$bad/modes.wc" "$2"
+    expect_status "$1" 1
+    expect_stderr "$1" "wrenchcone: <mode>:1:$3"
+}
+
+# usage_error NAME ARGS...: exit status 2, a message, nothing on stdout
+usage_error() {
+    usage_name=$1
+    shift
+    run /dev/null "$@"
+    expect_status "$usage_name" 2
+    if [ ! -s "$tmp/err" ]; then
+        fail "$usage_name" "no message on stderr"
+    fi
+}
+
+# Every error class of SPEC 3.
+bad_file unknown-keyword n "3:1: unknown keyword 'mas'"
+bad_file bad-number nn "4:7: bad number 'x1'"
+bad_file division-by-zero n "2:10: division by zero in '1/0'"
+bad_file zero-normal nn "3:18: zero normal"
+bad_file mass-nonpositive n "2:6: mass must be positive"
+bad_file inertia-nonpositive n "3:9: inertia must be positive"
+bad_file friction-negative n "3:32: friction must be non-negative"
+bad_file polygon-degenerate n \
+    "2:3: degenerate polygon: vertices 0, 1 and 2 are collinear"
+bad_file polygon-self-intersecting n \
+    "3:1: self-intersecting polygon: edges 0 and 2 cross"
+bad_file point-off-boundary ns \
+    "4:8: point (2, 0) is not on the shape's boundary; give its normal"
+bad_file point-at-vertex nn \
+    "4:7: point (2, 2) is a polygon vertex; give its normal"
+bad_file duplicate-fixel nns \
+    "4:7: fixel 3 has the same point and normal as fixel 1"
+bad_file duplicate-keyword n "4:1: duplicate 'mass'"
+bad_file missing-argument n "2:8: 'com' needs 2 numbers"
+bad_file trailing-token n "3:18: unexpected token '1'"
+bad_file no-fixel n "3:17: no fixel in the problem"
+bad_file unterminated-name n "2:6: unterminated string"
+
+# The file is read before the mode: a bad file and a bad mode report the
+# file.
+bad_file unknown-keyword xyz "3:1: unknown keyword 'mas'"
+
+# Bad modes (fixel 1 touching, fixel 2 near; Table 2).
+bad_mode mode-too-long nas "3: mode has 3 letters; the problem has 2 fixels"
+bad_mode mode-too-short n "2: mode has 1 letter; the problem has 2 fixels"
+bad_mode mode-empty "" "1: mode has 0 letters; the problem has 2 fixels"
+bad_mode mode-unknown-letter nx "2: unknown mode letter 'x'"
+bad_mode mode-uppercase Na "1: unknown mode letter 'N'"
+bad_mode mode-a-on-touching aa \
+    "1: letter 'a' not allowed on fixel 1, which is touching"
+bad_mode mode-u-on-touching us \
+    "1: letter 'u' not allowed on fixel 1, which is touching"
+bad_mode mode-n-on-near nn "2: letter 'n' not allowed on fixel 2, which is near"
+bad_mode mode-m-on-near mm "2: letter 'm' not allowed on fixel 2, which is near"
+
+# The good modes of the same problem are answers, not errors.
+for mode in na nu ns mu la ra su; do
+    run /dev/null cone "$bad/modes.wc" "$mode"
+    if [ "$status" -ne 0 ]; then
+        fail "good-mode-$mode" "exit status $status, expected 0"
+        sed 's/^/    /' "$tmp/err"
+    fi
+done
+
+# Standard input is named <stdin>.
+run "$bad/unknown-keyword.wc" cone - n
+expect_status stdin 1
+expect_stderr stdin "wrenchcone: <stdin>:3:1: unknown keyword 'mas'"
+run "$bad/modes.wc" cone - n
+expect_status stdin-mode 1
+expect_stderr stdin-mode \
+    "wrenchcone: <mode>:1:2: mode has 1 letter; the problem has 2 fixels"
+
+# A file that cannot be read is bad input, reported with its name.
+missing="$tmp/no-such-file.wc"
+run /dev/null cone "$missing" n
+expect_status missing-file 1
+case $(cat "$tmp/err") in
+    "wrenchcone: $missing: "?*) ;;
+    *) fail missing-file "stderr does not name the file:"
+       sed 's/^/    /' "$tmp/err" ;;
+esac
+if [ "$(wc -l <"$tmp/err")" -ne 1 ]; then
+    fail missing-file "stderr is not one line"
+fi
+
+# Bad usage.
+usage_error no-arguments
+usage_error bogus-option --bogus
+usage_error cone-bogus-option cone --bogus "$bad/modes.wc" na
+usage_error cone-no-arguments cone
+usage_error cone-missing-mode cone "$bad/modes.wc"
+usage_error cone-extra-argument cone "$bad/modes.wc" na na
+
+if [ "$failures" -ne 0 ]; then
+    printf '%s: %d failure(s)\n' "$0" "$failures"
+    exit 1
+fi
+exit 0
