@@ -111,17 +111,22 @@ wc_wrench_cone_direct(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
         wc_trace_add(trace, "J", J, "wrench matrix, columns n_1..n_%ld, t_1..t_%ld",
                      (long) n, (long) n);
         wc_trace_add(trace, "M", M, "inertia matrix diag(m, m, I)");
-        wc_trace_add(trace, "V_x =", Eq, "rows h: h . nudot = 0 (a_in = 0, a_it = 0 rows of J^T)");
-        wc_trace_add(trace, "V_x <=", Le, "rows h: h . nudot <= 0");
-        wc_trace_add(trace, "V_x <", Lt, "rows h: h . nudot < 0 (strict)");
+        wc_trace_add(trace, "V_x equalities", Eq,
+                     "rows h: h . nudot = 0 (a_in = 0, a_it = 0 rows of J^T)");
+        wc_trace_add(trace, "V_x inequalities", Le, "rows h: h . nudot <= 0");
+        wc_trace_add(trace, "V_x strict", Lt, "rows h: h . nudot < 0");
         fmpq_mat_init(Vr, fmpz_mat_nrows(V->rays), 3);
         fmpq_mat_set_fmpz_mat(Vr, V->rays);
-        wc_trace_add(trace, "rays of cl V_x", Vr, V->empty ? "V_x is empty"
+        wc_trace_add(trace, "cl V_x rays", Vr, V->empty ? "V_x is empty"
                      : "%ld of %ld faces of cl V_x belong to V_x",
                      (long) (V->nfaces - wc_cone_excluded_faces(V)),
                      (long) V->nfaces);
         fmpq_mat_clear(Vr);
-        wc_trace_add(trace, "-J D_x", Q, "rows: friction-cone edges as wrenches");
+        fmpq_mat_init(Vr, fmpz_mat_nrows(V->lines), 3);
+        fmpq_mat_set_fmpz_mat(Vr, V->lines);
+        wc_trace_add(trace, "cl V_x lines", Vr, NULL);
+        fmpq_mat_clear(Vr);
+        wc_trace_add(trace, "-J D_x", Q, "rows: friction-cone edges as wrenches; W = M V_x + pos(-J D_x)");
     }
 
 cleanup:

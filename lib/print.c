@@ -160,8 +160,8 @@ wc_cone_fprint_text(FILE * out, const wc_cone_t C, const char * indent)
     fprintf(out, "%sdimension %ld, lineality %ld, %s", indent, (long) C->dim,
             (long) C->lineality_dim, excl == 0 ? "closed" : "not closed");
     if (excl > 0)
-        fprintf(out, ": %ld of %ld faces of the closure excluded",
-                (long) excl, (long) C->nfaces);
+        fprintf(out, " (%ld of %ld faces excluded)", (long) excl,
+                (long) C->nfaces);
     putc('\n', out);
     fprintf(out, "%srays of the closure:%s\n", indent,
             fmpz_mat_nrows(C->rays) ? "" : " none");
