@@ -35,6 +35,22 @@ nrows(const fmpq_mat_t A)
     return A == NULL ? 0 : fmpq_mat_nrows(A);
 }
 
+/* out := the rows of A above the rows of B (either may be NULL); out is
+   initialised here.  */
+static void
+vstack(fmpq_mat_t out, const fmpq_mat_t A, const fmpq_mat_t B, slong d)
+{
+    slong na = nrows(A), nb = nrows(B), i, j;
+
+    fmpq_mat_init(out, na + nb, d);
+    for (i = 0; i < na; i++)
+        for (j = 0; j < d; j++)
+            fmpq_set(fmpq_mat_entry(out, i, j), fmpq_mat_entry(A, i, j));
+    for (i = 0; i < nb; i++)
+        for (j = 0; j < d; j++)
+            fmpq_set(fmpq_mat_entry(out, na + i, j), fmpq_mat_entry(B, i, j));
+}
+
 /* v := the primitive integer vector on the ray of row i of A.  */
 static void
 row_primitive(fmpz * v, const fmpq_mat_t A, slong i)
@@ -483,28 +499,14 @@ static void
 set_closure(wc_cone_t C, const fmpq_mat_t rays, const fmpq_mat_t lines,
             const fmpq_mat_t E, const fmpq_mat_t H)
 {
-    slong d = C->d, nr = nrows(rays), nl = nrows(lines), i, j, k, m;
-    slong ne = nrows(E), nh = nrows(H);
+    slong d = C->d, nr = nrows(rays), i, j, k, m;
     fmpq_mat_t S, EH, Lq, Eq, R, Hq;
     int * keep, * sel;
 
-    fmpq_mat_init(S, nr + nl, d);
-    for (i = 0; i < nr; i++)
-        for (j = 0; j < d; j++)
-            fmpq_set(fmpq_mat_entry(S, i, j), fmpq_mat_entry(rays, i, j));
-    for (i = 0; i < nl; i++)
-        for (j = 0; j < d; j++)
-            fmpq_set(fmpq_mat_entry(S, nr + i, j),
-                     fmpq_mat_entry(lines, i, j));
+    vstack(S, rays, lines, d);
 
     /* Lines and equalities: canonical bases.  */
-    fmpq_mat_init(EH, ne + nh, d);
-    for (i = 0; i < ne; i++)
-        for (j = 0; j < d; j++)
-            fmpq_set(fmpq_mat_entry(EH, i, j), fmpq_mat_entry(E, i, j));
-    for (i = 0; i < nh; i++)
-        for (j = 0; j < d; j++)
-            fmpq_set(fmpq_mat_entry(EH, ne + i, j), fmpq_mat_entry(H, i, j));
+    vstack(EH, E, H, d);
     fmpq_mat_init(Lq, 0, d);
     nullspace_rows(Lq, EH, d);
     C->lineality_dim = rref_rows(Lq, Lq, d);
@@ -590,20 +592,13 @@ _wc_cone_set_hrep_kernel(wc_cone_t C, const fmpq_mat_t eqs,
                          const fmpq_mat_t ineqs, const fmpq_mat_t strict,
                          int use_cdd, wc_error_t err)
 {
-    slong d = C->d, nh = nrows(ineqs), ns = nrows(strict), i, j, f;
+    slong d = C->d, ns = nrows(strict), i, f;
     fmpq_mat_t H, rays, lines;
     fmpz_mat_t Sz;
     fmpz * p = _fmpz_vec_init(d);
     int status;
 
-    fmpq_mat_init(H, nh + ns, d);
-    for (i = 0; i < nh; i++)
-        for (j = 0; j < d; j++)
-            fmpq_set(fmpq_mat_entry(H, i, j), fmpq_mat_entry(ineqs, i, j));
-    for (i = 0; i < ns; i++)
-        for (j = 0; j < d; j++)
-            fmpq_set(fmpq_mat_entry(H, nh + i, j),
-                     fmpq_mat_entry(strict, i, j));
+    vstack(H, ineqs, strict, d);
     fmpq_mat_init(rays, 0, d);
     fmpq_mat_init(lines, 0, d);
     fmpz_mat_init(Sz, ns, d);
@@ -696,7 +691,7 @@ int
 wc_cone_image_sum(wc_cone_t W, const fmpq_mat_t T, const wc_cone_t V,
                   const fmpq_mat_t Q, wc_error_t err)
 {
-    slong d = W->d, e = V->d, nq = nrows(Q);
+    slong d = W->d, e = V->d;
     slong kv, lv, i, j, f, m, k, words;
     fmpq_mat_t Vr, Vl, TVr, TVl, Tt, G;
     fmpz_mat_t TVz;
@@ -723,13 +718,7 @@ wc_cone_image_sum(wc_cone_t W, const fmpq_mat_t T, const wc_cone_t V,
         fmpq_mat_mul(TVr, Vr, Tt);
     if (lv > 0)
         fmpq_mat_mul(TVl, Vl, Tt);
-    fmpq_mat_init(G, kv + nq, d);
-    for (i = 0; i < kv; i++)
-        for (j = 0; j < d; j++)
-            fmpq_set(fmpq_mat_entry(G, i, j), fmpq_mat_entry(TVr, i, j));
-    for (i = 0; i < nq; i++)
-        for (j = 0; j < d; j++)
-            fmpq_set(fmpq_mat_entry(G, kv + i, j), fmpq_mat_entry(Q, i, j));
+    vstack(G, TVr, Q, d);
     fmpz_mat_init(TVz, kv, d);
 
     status = wc_cone_set_generators(W, G, TVl, err);
