@@ -194,6 +194,21 @@ project_out(fmpq_mat_t A, const fmpq_mat_t U)
     fmpq_mat_clear(Ad);
 }
 
+typedef struct
+{
+    const fmpz * row;
+    slong d;
+}
+row_ref;
+
+static int
+row_ref_cmp(const void * a, const void * b)
+{
+    const row_ref * x = a, * y = b;
+
+    return vec_cmp(x->row, y->row, x->d);
+}
+
 /* out := the rows of A made primitive, zero rows dropped, sorted and
    without repeats.  */
 static void
@@ -201,35 +216,28 @@ canonical_rows(fmpz_mat_t out, const fmpq_mat_t A, slong d)
 {
     slong m = nrows(A), i, j, k = 0;
     fmpz_mat_t V;
-    slong * idx = flint_malloc(sizeof(slong) * (m + 1));
+    row_ref * ref = flint_malloc(sizeof(row_ref) * (m + 1));
 
     fmpz_mat_init(V, m, d);
     for (i = 0; i < m; i++)
     {
         row_primitive(WC_ROW(V, i), A, i);
         if (!_fmpz_vec_is_zero(WC_ROW(V, i), d))
-            idx[k++] = i;
+        {
+            ref[k].row = WC_ROW(V, i);
+            ref[k++].d = d;
+        }
     }
-    /* Insertion sort of row indices: the lists are short.  */
-    for (i = 1; i < k; i++)
-    {
-        slong t = idx[i];
-
-        for (j = i; j > 0 && vec_cmp(WC_ROW(V, idx[j - 1]),
-                                     WC_ROW(V, t), d) > 0; j--)
-            idx[j] = idx[j - 1];
-        idx[j] = t;
-    }
+    qsort(ref, k, sizeof(row_ref), row_ref_cmp);
     for (i = 0, j = 0; i < k; i++)
-        if (j == 0 || vec_cmp(WC_ROW(V, idx[j - 1]),
-                              WC_ROW(V, idx[i]), d) != 0)
-            idx[j++] = idx[i];
+        if (j == 0 || vec_cmp(ref[j - 1].row, ref[i].row, d) != 0)
+            ref[j++] = ref[i];
     fmpz_mat_clear(out);
     fmpz_mat_init(out, j, d);
     for (i = 0; i < j; i++)
-        _fmpz_vec_set(WC_ROW(out, i), WC_ROW(V, idx[i]), d);
+        _fmpz_vec_set(WC_ROW(out, i), ref[i].row, d);
     fmpz_mat_clear(V);
-    flint_free(idx);
+    flint_free(ref);
 }
 
 /* out := the canonical basis of the row space of A: its RREF with rows

@@ -80,19 +80,48 @@ add_rows(fmpz_mat_t G, slong * k, const fmpq_mat_t A, int both)
     fmpz_clear(c);
 }
 
-/* 1 when h . g <= 0 for every row g of G.  */
+/* 1 when h . g <= 0 for every row g of G.  The scan starts at *last,
+   the row that rejected the previous candidate, and leaves the rejecting
+   row there: the few generators far out in a direction reject most
+   candidates, so most tests end after one or two dot products.  */
 static int
-valid(const fmpz * h, const fmpz_mat_t G, slong k, fmpz_t s)
+valid(const fmpz * h, const fmpz_mat_t G, slong k, fmpz_t s, slong * last)
 {
-    slong i;
+    slong i, r;
 
-    for (i = 0; i < k; i++)
+    for (r = 0, i = *last; r < k; r++, i = (i + 1 == k ? 0 : i + 1))
     {
         _fmpz_vec_dot(s, h, ROW(G, i), 3);
         if (fmpz_sgn(s) > 0)
+        {
+            *last = i;
             return 0;
+        }
     }
     return 1;
+}
+
+/* on[i]: the accepted facets that generator i lies on (a short list in
+   general position).  A pair of generators both on one accepted facet
+   spans that facet's plane again, so it is skipped: coplanar generators
+   then cost one dot product per pair instead of a full validation.  */
+typedef struct
+{
+    slong len;
+    slong alloc;
+    slong * f;
+}
+facet_list;
+
+static void
+facet_list_push(facet_list * L, slong f)
+{
+    if (L->len == L->alloc)
+    {
+        L->alloc = L->alloc ? 2 * L->alloc : 4;
+        L->f = flint_realloc(L->f, sizeof(slong) * L->alloc);
+    }
+    L->f[L->len++] = f;
 }
 
 /* E := a basis of the null space of the k rows of G; F := facet normals
@@ -102,7 +131,7 @@ hull(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
 {
     fmpz_mat_t Gk, N, out;
     fmpz * h = _fmpz_vec_init(3), * e = NULL;
-    slong r, i, j, nf = 0, alloc = 8, s;
+    slong r, i, j, nf = 0, alloc = 8, s, last = 0;
     fmpz_t t;
 
     fmpz_init(t);
@@ -134,44 +163,63 @@ hull(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
         nf++; \
     } while (0)
 
-    if (r == 3)
+    if (r == 3 || r == 2)
     {
+        facet_list * on = flint_calloc(k + 1, sizeof(facet_list));
+
+        if (r == 2)
+        {
+            e = _fmpz_vec_init(3);
+            for (i = 0; i < 3; i++)
+                fmpz_set(e + i, fmpz_mat_entry(N, i, 0));
+        }
         for (i = 0; i < k; i++)
-            for (j = i + 1; j < k; j++)
+            for (j = (r == 3 ? i + 1 : k - 1); j < k; j++)
             {
-                cross(h, ROW(G, i), ROW(G, j));
+                slong q, sign;
+                int known = 0;
+
+                /* r = 3: the plane of g_i and g_j; r = 2: the line of g_i
+                   (j is a dummy).  */
+                for (q = 0; q < on[i].len && !known; q++)
+                {
+                    _fmpz_vec_dot(t, ROW(out, on[i].f[q]), ROW(G, j), 3);
+                    known = r == 2 || fmpz_is_zero(t);
+                }
+                if (known)
+                    continue;
+                if (r == 3)
+                    cross(h, ROW(G, i), ROW(G, j));
+                else
+                    cross(h, e, ROW(G, i));
                 if (_fmpz_vec_is_zero(h, 3))
                     continue;
-                if (valid(h, G, k, t))
+                for (sign = 0; sign < 2; sign++, _fmpz_vec_neg(h, h, 3))
+                {
+                    if (!valid(h, G, k, t, &last))
+                        continue;
                     PUSH(h);
-                _fmpz_vec_neg(h, h, 3);
-                if (valid(h, G, k, t))
-                    PUSH(h);
+                    for (q = 0; q < k; q++)
+                    {
+                        _fmpz_vec_dot(t, h, ROW(G, q), 3);
+                        if (fmpz_is_zero(t))
+                            facet_list_push(on + q, nf - 1);
+                    }
+                }
             }
-    }
-    else if (r == 2)
-    {
-        e = _fmpz_vec_init(3);
-        for (i = 0; i < 3; i++)
-            fmpz_set(e + i, fmpz_mat_entry(N, i, 0));
         for (i = 0; i < k; i++)
-        {
-            cross(h, e, ROW(G, i));
-            if (valid(h, G, k, t))
-                PUSH(h);
-            _fmpz_vec_neg(h, h, 3);
-            if (valid(h, G, k, t))
-                PUSH(h);
-        }
-        _fmpz_vec_clear(e, 3);
+            flint_free(on[i].f);
+        flint_free(on);
+        if (e != NULL)
+            _fmpz_vec_clear(e, 3);
     }
     else if (r == 1)
     {
         _fmpz_vec_neg(h, ROW(G, 0), 3);
-        if (valid(h, G, k, t))
+        if (valid(h, G, k, t, &last))
             PUSH(h);
         _fmpz_vec_neg(h, h, 3);
-        if (valid(h, G, k, t))
+        if (valid(h, G, k, t, &last))
             PUSH(h);
     }
 #undef PUSH
@@ -220,7 +268,13 @@ _wc_hull3_h_to_v(fmpq_mat_t rays, fmpq_mat_t lines, const fmpq_mat_t E,
     (void) err;
     fmpz_mat_init(G, rows_of(H) + 2 * rows_of(E) + 1, 3);
     add_rows(G, &k, E, 1);
-    r = k == 0 ? 0 : fmpz_mat_rank(G);
+    {
+        fmpz_mat_t W;
+
+        fmpz_mat_window_init(W, G, 0, 0, k, 3);
+        r = k == 0 ? 0 : fmpz_mat_rank(W);
+        fmpz_mat_window_clear(W);
+    }
     fmpq_mat_clear(rays);
     fmpq_mat_clear(lines);
     if (r == 3)
