@@ -65,8 +65,11 @@ put_row(mytype * dst, const fmpq_mat_t A, slong r, int sign, slong d)
 static int
 cdd_fail(wc_error_t err, const char * what, dd_ErrorType e)
 {
+    if (e == dd_NoError)        /* an allocation or copy returned NULL */
+        return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                            "cddlib failed in %s", what);
     return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                        "cddlib failed in %s (error %d)", what, (int) e);
+                        "cddlib failed in %s (dd_ErrorType %d)", what, (int) e);
 }
 
 /* Split the rows of a cdd matrix (homogeneous part, columns 1..d) into
@@ -98,11 +101,7 @@ split_rows(fmpq_mat_t lin, fmpq_mat_t other, dd_MatrixPtr M, slong d,
                 zero = 0;
         }
         if (zero)
-        {
-            for (j = 0; j < d; j++)
-                fmpq_zero(fmpq_mat_entry(T, r, j));
-            continue;
-        }
+            continue;           /* row r is overwritten by the next one */
         if (is_lin)
             nl++;
         else

@@ -4,9 +4,11 @@
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   The closure is computed by cddlib (one conversion per cone, through
-   cddbridge.c); everything else -- canonical vectors, redundancy removal,
-   the face lattice and strictness -- is exact linear algebra here.  A face
+   One conversion per cone computes the closure: hull3.c in dimension 3,
+   cddlib (cddbridge.c) otherwise or on request; everything else --
+   canonical vectors, redundancy removal, a consistency check of the
+   conversion, the face lattice and strictness -- is exact linear algebra
+   here.  A face
    is identified by the set of closure rays it contains (the lineality
    space lies in every face), and every face is an intersection of facets,
    so the lattice is the closure of the facets' ray sets under
@@ -20,11 +22,11 @@
 #include <flint/fmpz_vec.h>
 
 #include "wrenchcone.h"
+#include "cddbridge.h"
+#include "hull3.h"
 
 /* Row i of an fmpz_mat (FLINT 2.9 has no fmpz_mat_row).  */
 #define WC_ROW(A, i) ((A)->rows[i])
-#include "cddbridge.h"
-#include "hull3.h"
 
 /* ---------------------------------------------------------------------
    Small helpers on rows.  */
@@ -498,18 +500,33 @@ build_faces(wc_cone_t C)
     flint_free(sel);
 }
 
+/* 1 when h . x > 0 for a ray x of C, or h . l != 0 for a line l.  */
+static int
+cuts(const fmpz * h, const wc_cone_t C)
+{
+    slong j, d = C->d;
+
+    for (j = 0; j < fmpz_mat_nrows(C->rays); j++)
+        if (dot_sgn(h, WC_ROW(C->rays, j), d) > 0)
+            return 1;
+    for (j = 0; j < fmpz_mat_nrows(C->lines); j++)
+        if (dot_sgn(h, WC_ROW(C->lines, j), d) != 0)
+            return 1;
+    return 0;
+}
+
 /* Set the closure of C, a nonempty closed cone described completely both
    by generators (rays, lines) and by constraints E x = 0, H x <= 0 (with
    any redundancy).  Its lineality space is { x : E x = 0, H x = 0 } --
    read from the constraints, as generators may span lines without saying
    so -- and its linear hull is the span of the generators.  */
-static void
+static int
 set_closure(wc_cone_t C, const fmpq_mat_t rays, const fmpq_mat_t lines,
-            const fmpq_mat_t E, const fmpq_mat_t H)
+            const fmpq_mat_t E, const fmpq_mat_t H, wc_error_t err)
 {
     slong d = C->d, nr = nrows(rays), i, j, k, m;
     fmpq_mat_t S, EH, Lq, Eq, R, Hq;
-    int * keep, * sel;
+    int * keep, * sel, status = WC_OK;
 
     vstack(S, rays, lines, d);
 
@@ -517,7 +534,7 @@ set_closure(wc_cone_t C, const fmpq_mat_t rays, const fmpq_mat_t lines,
     vstack(EH, E, H, d);
     fmpq_mat_init(Lq, 0, d);
     nullspace_rows(Lq, EH, d);
-    C->lineality_dim = rref_rows(Lq, Lq, d);
+    C->lineality_dim = nrows(Lq);   /* a basis: independent rows */
     canonical_basis(C->lines, Lq, d);
     fmpq_mat_init(Eq, 0, d);
     nullspace_rows(Eq, S, d);
@@ -538,10 +555,21 @@ set_closure(wc_cone_t C, const fmpq_mat_t rays, const fmpq_mat_t lines,
     project_out(Hq, Eq);
     canonical_rows(C->ineqs, Hq, d);
 
-    /* Redundancy: a facet's tight rays span dim - 1 (with the lines); an
-       extreme ray's tight facets span d - 1 (with equalities, lines).  */
+    /* The conversion is checked, not trusted: every facet holds on every
+       generator.  */
     k = fmpz_mat_nrows(C->rays);
     m = fmpz_mat_nrows(C->ineqs);
+    for (i = 0; i < m; i++)
+        if (cuts(WC_ROW(C->ineqs, i), C))
+        {
+            status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                  "internal error: the cone conversion gave "
+                                  "an inequality that cuts a generator");
+            goto cleanup;
+        }
+
+    /* Redundancy: a facet's tight rays span dim - 1 (with the lines); an
+       extreme ray's tight facets span d - 1 (with equalities, lines).  */
     keep = flint_malloc(sizeof(int) * (m + 1));
     sel = flint_malloc(sizeof(int) * (k + m + 1));
     for (i = 0; i < m; i++)
@@ -569,12 +597,14 @@ set_closure(wc_cone_t C, const fmpq_mat_t rays, const fmpq_mat_t lines,
     C->empty = 0;
     build_faces(C);
 
+cleanup:
     fmpq_mat_clear(S);
     fmpq_mat_clear(EH);
     fmpq_mat_clear(Lq);
     fmpq_mat_clear(Eq);
     fmpq_mat_clear(R);
     fmpq_mat_clear(Hq);
+    return status;
 }
 
 /* Sum of the rays of face F.  */
@@ -617,7 +647,9 @@ _wc_cone_set_hrep_kernel(wc_cone_t C, const fmpq_mat_t eqs,
         : _wc_cdd_h_to_v(rays, lines, d, eqs, H, err);
     if (status != WC_OK)
         goto cleanup;
-    set_closure(C, rays, lines, eqs, H);
+    status = set_closure(C, rays, lines, eqs, H, err);
+    if (status != WC_OK)
+        goto cleanup;
 
     /* The strict rows hold strictly on the relative interior of exactly
        the faces they do not vanish on; the cone is empty when they fail
@@ -635,6 +667,8 @@ _wc_cone_set_hrep_kernel(wc_cone_t C, const fmpq_mat_t eqs,
         wc_cone_set_empty(C);
 
 cleanup:
+    if (status != WC_OK)
+        wc_cone_set_empty(C);
     fmpq_mat_clear(H);
     fmpq_mat_clear(rays);
     fmpq_mat_clear(lines);
@@ -666,7 +700,9 @@ _wc_cone_set_generators_kernel(wc_cone_t C, const fmpq_mat_t rays,
         ? _wc_hull3_v_to_h(E, H, rays, lines, err)
         : _wc_cdd_v_to_h(E, H, d, rays, lines, err);
     if (status == WC_OK)
-        set_closure(C, rays, lines, E, H);
+        status = set_closure(C, rays, lines, E, H, err);
+    if (status != WC_OK)
+        wc_cone_set_empty(C);
     fmpq_mat_clear(E);
     fmpq_mat_clear(H);
     return status;

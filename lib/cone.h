@@ -78,7 +78,9 @@ int wc_cone_set_hrep(wc_cone_t C, const fmpq_mat_t eqs,
                      wc_error_t err);
 
 /* C = pos(rays) + span(lines), a closed cone (rows are generators, each
-   r x d; either may be NULL or have no rows).  */
+   r x d; either may be NULL or have no rows).  Returns WC_OK or
+   WC_EINTERNAL (err set; C left empty).  On failure every function here
+   leaves C empty.  */
 int wc_cone_set_generators(wc_cone_t C, const fmpq_mat_t rays,
                            const fmpq_mat_t lines, wc_error_t err);
 

@@ -13,7 +13,7 @@
 
 #include "wrenchcone.h"
 
-/* Append row h (3 entries) times sign to A, growing it by one row.  */
+/* Append column col of J, times sign, to A as a new last row.  */
 static void
 append_row(fmpq_mat_t A, const fmpq_mat_t J, slong col, int sign)
 {
@@ -44,6 +44,11 @@ wc_wrench_cone_direct(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
     wc_cone_t V;
     int status;
 
+    if ((status = wc_mode_check(P, mode, WC_TABLE_CONE, err)) != WC_OK)
+    {
+        wc_cone_set_empty(W);
+        return status;
+    }
     fmpq_mat_init(J, 3, 2 * n);
     fmpq_mat_init(M, 3, 3);
     fmpq_mat_init(Eq, 0, 3);

@@ -56,8 +56,8 @@ wc_wrench_cone_paper(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
                      const char * mode, wc_error_t err)
 {
     slong n = P->n, N2 = 2 * n, N4 = 4 * n, i, j, k, r, nz, ne;
-    int * flag = calloc(N4 + 1, sizeof(int));
-    slong * zcol = malloc(sizeof(slong) * (N4 + 1));
+    int * flag;
+    slong * zcol;
     fmpq_mat_t J, M, A, B, C, E, N, R, S, V, T1, T2, K, Pm, Kt, KFe, KFh,
         KF, F, Fle, Flt, b;
     char * zlab = NULL, * ylab = NULL, * cons = NULL;
@@ -65,6 +65,13 @@ wc_wrench_cone_paper(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
     char lab[64], buf[512];
     int status = WC_OK;
 
+    if ((status = wc_mode_check(P, mode, WC_TABLE_CONE, err)) != WC_OK)
+    {
+        wc_cone_set_empty(W);
+        return status;
+    }
+    flag = flint_calloc(N4 + 1, sizeof(int));
+    zcol = flint_malloc(sizeof(slong) * (N4 + 1));
     /* Every matrix is initialised here, so that cleanup can clear all.  */
     fmpq_mat_init(KF, 0, 0);
     fmpq_mat_init(F, 0, 3);
@@ -333,8 +340,8 @@ wc_wrench_cone_paper(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
 cleanup:
     if (status != WC_OK)
         wc_cone_set_empty(W);
-    free(flag);
-    free(zcol);
+    flint_free(flag);
+    flint_free(zcol);
     free(zlab);
     free(ylab);
     free(cons);

@@ -57,13 +57,15 @@ typedef enum { WC_METHOD_DIRECT = 0, WC_METHOD_PAPER = 1 } wc_method;
 /* The paper's route (Section 5): E, N, R, S, V, then K z = P g, z >= 0
    with strict coordinates, K^F by exact conversion, F = K^F P; the rows of
    F whose K^F K e_strict is negative are strict (Theorem 1 with k -> 0).
-   The mode must have passed wc_mode_check with WC_TABLE_CONE.  trace may
-   be NULL.  Returns WC_OK or WC_EINTERNAL.  */
+   trace may be NULL.  Returns WC_OK; WC_EINPUT when the mode fails
+   wc_mode_check (WC_TABLE_CONE), with err set as that function sets it;
+   or WC_EINTERNAL.  On failure W is left empty.  */
 int wc_wrench_cone_paper(wc_cone_t W, wc_trace_t trace,
                          const wc_problem_t P, const char * mode,
                          wc_error_t err);
 
-/* The direct route: W(x) = M V_x + (-J) D_x, a Minkowski sum in R^3.  */
+/* The direct route: W(x) = M V_x + (-J) D_x, a Minkowski sum in R^3.
+   Same contract as wc_wrench_cone_paper.  */
 int wc_wrench_cone_direct(wc_cone_t W, wc_trace_t trace,
                           const wc_problem_t P, const char * mode,
                           wc_error_t err);

@@ -163,6 +163,23 @@ main(void)
         wc_cone_clear(Wd);
     }
 
+    /* The library checks modes itself: a short mode or a letter the
+       fixel's state forbids is bad input, never a read past the end.  */
+    for (method = 0; method < 2; method++)
+    {
+        static const char * const bad[] = { "n", "nas", "an", "xa" };
+        int b;
+
+        for (b = 0; b < 4; b++)
+        {
+            wc_cone_init(Wd, 3);
+            if (wc_wrench_cone(Wd, NULL, P, bad[b], method, err) != WC_EINPUT
+                || !Wd->empty || strcmp(err->file, "<mode>") != 0)
+                wctest_fail("route %d accepts bad mode '%s'", method, bad[b]);
+            wc_cone_clear(Wd);
+        }
+    }
+
     /* Scaling a normal by a positive rational changes nothing (SPEC 2).  */
     fmpq_set_si(P->fixels[0].normal + 1, 7, 3);
     fmpq_set_si(P->fixels[1].normal + 0, -5, 1);
