@@ -172,6 +172,35 @@ main(int argc, char ** argv)
                1e3 * td, "-", "-", ed ? "empty" : "nonempty");
         wc_problem_clear(P);
     }
+    {
+        /* Degenerate: 200 collinear fixels with parallel normals, so that
+           many generators of -J D_x are coplanar.  */
+        wc_problem_t P;
+        char * big;
+        double td;
+        int ed;
+
+        n = 200;
+        wc_problem_init(P);
+        fmpq_set_si(P->mu_s, 1, 5);
+        fmpq_set_si(P->mu_k, 1, 5);
+        for (m = 0; m < n; m++)
+        {
+            wc_fixel_struct * f = wc_problem_add_fixel(P);
+
+            fmpq_set_si(f->point + 0, m, 1);
+            fmpq_set_si(f->normal + 1, 1, 1);
+        }
+        big = malloc(n + 1);
+        memset(big, 'n', n);
+        big[n] = '\0';
+        td = time_cone(P, big, WC_METHOD_DIRECT, budget, &ed);
+        printf("%3ld  %-6s  %12.4f  %12s  %9s  %s, collinear fixels\n",
+               (long) n, "n..n", 1e3 * td, "-", "-",
+               ed ? "empty" : "nonempty");
+        free(big);
+        wc_problem_clear(P);
+    }
     if (maxn >= 6)
         printf("direct vs paper at n=6: %.1f x\n", ratio6);
     flint_cleanup_master();
