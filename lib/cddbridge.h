@@ -28,6 +28,13 @@ int _wc_cdd_v_to_h(fmpq_mat_t E, fmpq_mat_t H, slong d,
                    const fmpq_mat_t rays, const fmpq_mat_t lines,
                    wc_error_t err);
 
+/* x := a point (nv = cols(A) entries) of { x : A_i . x >= b_i for rows
+   with eq[i] == 0, A_i . x = b_i for rows with eq[i] != 0 } -- cddlib's
+   basic solution, exact.  Returns 1 when found, 0 when the set is empty,
+   -1 (err set, WC_EINTERNAL) when cddlib fails.  A must have a row.  */
+int _wc_cdd_lp_point(fmpq * x, const fmpq_mat_t A, const fmpq * b,
+                     const int * eq, wc_error_t err);
+
 /* wc_cone_set_hrep and wc_cone_set_generators with the conversion done
    by cddlib even in dimension 3 (where hull3.c is the default): the paper
    route uses cddlib throughout, so that comparing the two routes also

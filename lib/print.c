@@ -382,3 +382,164 @@ wc_trace_fprint_json(FILE * out, const wc_trace_t T)
     putc(']', out);
     return done(out);
 }
+
+static void
+json_fmpz_vec(FILE * out, const fmpz * v, slong len)
+{
+    slong j;
+
+    putc('[', out);
+    for (j = 0; j < len; j++)
+    {
+        if (j)
+            fputs(", ", out);
+        json_fmpz(out, v + j);
+    }
+    putc(']', out);
+}
+
+static void
+json_fmpq_vec(FILE * out, const fmpq * v, slong len)
+{
+    slong j;
+
+    putc('[', out);
+    for (j = 0; j < len; j++)
+    {
+        fputs(j ? ", \"" : "\"", out);
+        wc_fprint_fmpq(out, v + j);
+        putc('"', out);
+    }
+    putc(']', out);
+}
+
+static void
+text_fmpz_vec(FILE * out, const fmpz * v, slong len)
+{
+    slong j;
+
+    putc('(', out);
+    for (j = 0; j < len; j++)
+    {
+        if (j)
+            fputs(", ", out);
+        fmpz_fprint(out, v + j);
+    }
+    putc(')', out);
+}
+
+int
+wc_modes_fprint(FILE * out, const wc_modes_t M, int json, int witness)
+{
+    slong i;
+
+    if (!json)
+    {
+        for (i = 0; i < M->count; i++)
+        {
+            fputs(M->modes[i], out);
+            if (witness)
+            {
+                fputs("  nu = ", out);
+                text_fmpz_vec(out, WC_ROW(M->witness, i), 3);
+            }
+            putc('\n', out);
+        }
+        return done(out);
+    }
+    fprintf(out, "{\"fixels\": %ld, \"modes\": [", (long) M->n);
+    for (i = 0; i < M->count; i++)
+    {
+        if (i)
+            fputs(", ", out);
+        wc_fprint_json_string(out, M->modes[i]);
+    }
+    fprintf(out, "], \"count\": %ld", (long) M->count);
+    if (witness)
+    {
+        fputs(", \"witnesses\": [", out);
+        for (i = 0; i < M->count; i++)
+        {
+            if (i)
+                fputs(", ", out);
+            json_fmpz_vec(out, WC_ROW(M->witness, i), 3);
+        }
+        putc(']', out);
+    }
+    fputs("}\n", out);
+    return done(out);
+}
+
+int
+wc_certificate_fprint(FILE * out, const wc_certificate_t C,
+                      const wc_problem_t P, int json)
+{
+    slong m = fmpz_mat_nrows(C->rows), i;
+
+    if (!json)
+    {
+        fprintf(out, "mode %s: %s\n", C->mode,
+                C->feasible ? "kinematically feasible" : "infeasible");
+        if (C->feasible)
+        {
+            fputs("  witness twist nu = ", out);
+            text_fmpz_vec(out, C->witness, 3);
+            fputs("\n  constraints (row . nu REL 0):\n", out);
+        }
+        else
+            fputs("  constraints (row . nu REL 0) and Motzkin multipliers y:\n",
+                  out);
+        for (i = 0; i < m; i++)
+        {
+            fputs("    ", out);
+            text_fmpz_vec(out, WC_ROW(C->rows, i), 3);
+            fprintf(out, " %s 0", wc_relation_str(C->rel[i]));
+            if (!C->feasible)
+            {
+                fputs("   y = ", out);
+                fmpz_fprint(out, C->mult + i);
+            }
+            putc('\n', out);
+        }
+        if (!C->feasible)
+            fputs("  sum of y_k row_k is 0, y >= 0 on > and >= rows, y > 0 on a "
+                  "> row:\n  no twist satisfies the mode (Motzkin's "
+                  "transposition theorem)\n", out);
+        return done(out);
+    }
+    fputs("{\"kind\": \"mode-feasibility\", \"mode\": ", out);
+    wc_fprint_json_string(out, C->mode);
+    fprintf(out, ", \"feasible\": %s", C->feasible ? "true" : "false");
+    if (C->feasible)
+    {
+        fputs(", \"witness\": ", out);
+        json_fmpz_vec(out, C->witness, 3);
+    }
+    fputs(", \"constraints\": [", out);
+    for (i = 0; i < m; i++)
+    {
+        fputs(i ? ", {\"row\": " : "{\"row\": ", out);
+        json_fmpz_vec(out, WC_ROW(C->rows, i), 3);
+        fprintf(out, ", \"relation\": \"%s\"}", wc_relation_str(C->rel[i]));
+    }
+    putc(']', out);
+    if (!C->feasible)
+    {
+        fputs(", \"multipliers\": ", out);
+        json_fmpz_vec(out, C->mult, m);
+    }
+    fputs(", \"problem\": {\"com\": ", out);
+    json_fmpq_vec(out, P->com, 2);
+    fputs(", \"fixels\": [", out);
+    for (i = 0; i < P->n; i++)
+    {
+        fputs(i ? ", {\"point\": " : "{\"point\": ", out);
+        json_fmpq_vec(out, P->fixels[i].point, 2);
+        fputs(", \"normal\": ", out);
+        json_fmpq_vec(out, P->fixels[i].normal, 2);
+        fprintf(out, ", \"state\": \"%s\"}",
+                P->fixels[i].state == WC_NEAR ? "near" : "touching");
+    }
+    fputs("]}}\n", out);
+    return done(out);
+}

@@ -14,6 +14,8 @@
 
 #include "cone.h"
 #include "wrench.h"
+#include "kinematics.h"
+#include "problem.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -42,6 +44,16 @@ int wc_cone_fprint_cdd(FILE * out, const wc_cone_t C, const char * title,
    of {"name", "note", "rows", "cols", "matrix"} objects.  */
 int wc_trace_fprint_text(FILE * out, const wc_trace_t T, const char * prefix);
 int wc_trace_fprint_json(FILE * out, const wc_trace_t T);
+
+/* The feasible modes: text (one per line, with the witness twist when
+   witness is set) or JSON {"fixels", "modes", "count"[, "witnesses"]}.  */
+int wc_modes_fprint(FILE * out, const wc_modes_t M, int json, int witness);
+
+/* A mode's certificate: text for people, or the self-contained JSON that
+   wrenchcone verify checks: {"kind": "mode-feasibility", "mode",
+   "feasible", "witness" | "multipliers", "constraints", "problem"}.  */
+int wc_certificate_fprint(FILE * out, const wc_certificate_t C,
+                          const wc_problem_t P, int json);
 
 #ifdef __cplusplus
 }

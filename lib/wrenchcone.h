@@ -18,6 +18,7 @@
 #include "model.h"
 #include "cone.h"
 #include "wrench.h"
+#include "kinematics.h"
 #include "print.h"
 
 #ifdef __cplusplus

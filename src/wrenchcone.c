@@ -30,8 +30,11 @@ usage(FILE * out)
           "Exact wrench cones for planar rigid-body contact tasks.\n"
           "\n"
           "Commands:\n"
-          "  cone PROBLEM MODE    the exact cone of external wrenches consistent with\n"
-          "                       the contact mode MODE (one letter per fixel)\n"
+          "  cone PROBLEM MODE      the exact cone of external wrenches consistent with\n"
+          "                         the contact mode MODE (one letter per fixel)\n"
+          "  modes PROBLEM          every kinematically feasible contact mode\n"
+          "  feasible PROBLEM MODE  one mode's verdict, with a checkable certificate\n"
+          "  verify CERTFILE        re-check a certificate with GMP arithmetic alone\n"
           "\n"
           "PROBLEM is a .wc problem file (see wrenchcone(5)); '-' reads standard input.\n"
           "Options of every command: --format=text|json, -h/--help, -V/--version.\n"
@@ -63,6 +66,40 @@ usage_cone(FILE * out)
           "  --trace          also print every intermediate matrix of the route\n"
           "  -h, --help       print this help and exit\n"
           "  -V, --version    print versions and exit\n", out);
+}
+
+static void
+usage_modes(FILE * out)
+{
+    fputs("Usage: " PROG " modes [OPTIONS] PROBLEM\n"
+          "List every kinematically feasible contact mode (paper Table 1: s l r n on\n"
+          "touching fixels, s a on near ones), sorted, n..n included.  The modes are\n"
+          "read off the faces of the arrangement of the 2n planes J_k . nu = 0 in\n"
+          "twist space (O(n^2) faces), never off the 4^n strings.\n"
+          "\n"
+          "Options:\n"
+          "  --witness        also print, per mode, a primitive integer twist nu\n"
+          "                   (vx, vy, w) that has the mode\n"
+          "  --format=FMT     text (default: one mode per line) or json\n"
+          "  -h, --help       print this help and exit\n"
+          "  -V, --version    print versions and exit\n", out);
+}
+
+static void
+usage_feasible(FILE * out)
+{
+    fputs("Usage: " PROG " feasible [OPTIONS] PROBLEM MODE\n"
+          "Decide whether MODE (paper Table 1 letters) is kinematically feasible and\n"
+          "print a certificate: a primitive integer witness twist, or Motzkin\n"
+          "multipliers whose combination of the mode's constraint rows is zero,\n"
+          "proving that no twist has the mode.  Exit status 0 either way.\n"
+          "\n"
+          "Options:\n"
+          "  --certificate=FILE  also write the self-contained JSON certificate to\n"
+          "                      FILE, for '" PROG " verify FILE'\n"
+          "  --format=FMT        text (default) or json (the certificate itself)\n"
+          "  -h, --help          print this help and exit\n"
+          "  -V, --version       print versions and exit\n", out);
 }
 
 static void
@@ -186,61 +223,111 @@ finish_output(void)
     return WC_OK;
 }
 
-enum { OPT_FORMAT = 256, OPT_METHOD, OPT_TRACE };
+enum { OPT_FORMAT = 256, OPT_METHOD, OPT_TRACE, OPT_WITNESS, OPT_CERT };
 
+/* Which options a command takes, beyond --format, --help, --version.  */
+enum { TAKES_CDD = 1, TAKES_METHOD = 2, TAKES_TRACE = 4, TAKES_WITNESS = 8,
+       TAKES_CERT = 16 };
+
+typedef struct
+{
+    out_format fmt;
+    wc_method method;
+    int trace;
+    int witness;
+    const char * certificate;
+}
+options;
+
+/* Parse the options of command cmd; operands are left in argv[optind..].
+   Returns -1 to go on, or the exit status (help and version print and
+   return 0; bad usage returns 2).  */
 static int
-cmd_cone(int argc, char ** argv)
+parse_options(options * o, int argc, char ** argv, const char * cmd,
+              unsigned takes, void (*help)(FILE *))
 {
     static const struct option opts[] = {
         { "format", required_argument, NULL, OPT_FORMAT },
         { "method", required_argument, NULL, OPT_METHOD },
         { "trace", no_argument, NULL, OPT_TRACE },
+        { "witness", no_argument, NULL, OPT_WITNESS },
+        { "certificate", required_argument, NULL, OPT_CERT },
         { "help", no_argument, NULL, 'h' },
         { "version", no_argument, NULL, 'V' },
         { NULL, 0, NULL, 0 }
     };
-    out_format fmt = FMT_TEXT;
-    wc_method method = WC_METHOD_DIRECT;
-    int trace_on = 0, c, status;
+    int c;
+
+    o->fmt = FMT_TEXT;
+    o->method = WC_METHOD_DIRECT;
+    o->trace = 0;
+    o->witness = 0;
+    o->certificate = NULL;
+    opterr = 0;
+    optind = 1;
+    while ((c = getopt_long(argc, argv, "hV", opts, NULL)) != -1)
+    {
+        if ((c == OPT_METHOD && !(takes & TAKES_METHOD))
+            || (c == OPT_TRACE && !(takes & TAKES_TRACE))
+            || (c == OPT_WITNESS && !(takes & TAKES_WITNESS))
+            || (c == OPT_CERT && !(takes & TAKES_CERT)))
+            return usage_error(cmd, "option '%s' does not apply here",
+                               argv[optind - 1]);
+        switch (c)
+        {
+        case OPT_FORMAT:
+            if (!parse_format(&o->fmt, optarg, (takes & TAKES_CDD) != 0))
+                return usage_error(cmd, (takes & TAKES_CDD)
+                                   ? "unknown format '%s' (text, json, cdd, ine or ext)"
+                                   : "unknown format '%s' (text or json)", optarg);
+            break;
+        case OPT_METHOD:
+            if (strcmp(optarg, "direct") == 0)
+                o->method = WC_METHOD_DIRECT;
+            else if (strcmp(optarg, "paper") == 0)
+                o->method = WC_METHOD_PAPER;
+            else
+                return usage_error(cmd, "unknown method '%s' (direct or paper)",
+                                   optarg);
+            break;
+        case OPT_TRACE:
+            o->trace = 1;
+            break;
+        case OPT_WITNESS:
+            o->witness = 1;
+            break;
+        case OPT_CERT:
+            o->certificate = optarg;
+            break;
+        case 'h':
+            help(stdout);
+            return finish_output();
+        case 'V':
+            version();
+            return finish_output();
+        default:
+            return usage_error(cmd, "unknown or incomplete option '%s'",
+                               argv[optind - 1]);
+        }
+    }
+    return -1;
+}
+
+static int
+cmd_cone(int argc, char ** argv)
+{
+    options o;
+    int status;
     const char * path, * mode;
     wc_problem_t P;
     wc_error_t err;
     wc_cone_t W;
     wc_trace_t T;
 
-    opterr = 0;
-    while ((c = getopt_long(argc, argv, "hV", opts, NULL)) != -1)
-    {
-        switch (c)
-        {
-        case OPT_FORMAT:
-            if (!parse_format(&fmt, optarg, 1))
-                return usage_error("cone", "unknown format '%s' "
-                                   "(text, json, cdd, ine or ext)", optarg);
-            break;
-        case OPT_METHOD:
-            if (strcmp(optarg, "direct") == 0)
-                method = WC_METHOD_DIRECT;
-            else if (strcmp(optarg, "paper") == 0)
-                method = WC_METHOD_PAPER;
-            else
-                return usage_error("cone", "unknown method '%s' (direct or paper)",
-                                   optarg);
-            break;
-        case OPT_TRACE:
-            trace_on = 1;
-            break;
-        case 'h':
-            usage_cone(stdout);
-            return finish_output();
-        case 'V':
-            version();
-            return finish_output();
-        default:
-            return usage_error("cone", "unknown or incomplete option '%s'",
-                               argv[optind - 1]);
-        }
-    }
+    if ((status = parse_options(&o, argc, argv, "cone",
+                                TAKES_CDD | TAKES_METHOD | TAKES_TRACE,
+                                usage_cone)) >= 0)
+        return status;
     if (argc - optind != 2)
         return usage_error("cone", argc - optind < 2
                            ? "cone needs PROBLEM and MODE%s"
@@ -256,19 +343,19 @@ cmd_cone(int argc, char ** argv)
     if (status == WC_OK)
         status = wc_mode_check(P, mode, WC_TABLE_CONE, err);
     if (status == WC_OK)
-        status = wc_wrench_cone(W, trace_on ? T : NULL, P, mode, method, err);
+        status = wc_wrench_cone(W, o.trace ? T : NULL, P, mode, o.method, err);
     if (status != WC_OK)
     {
         report(err, status);
         goto cleanup;
     }
 
-    switch (fmt)
+    switch (o.fmt)
     {
     case FMT_TEXT:
-        if (trace_on)
+        if (o.trace)
         {
-            printf("trace (%s route):\n", method == WC_METHOD_PAPER
+            printf("trace (%s route):\n", o.method == WC_METHOD_PAPER
                    ? "paper, Section 5" : "direct, M V_x + (-J) D_x");
             wc_trace_fprint_text(stdout, T, "  ");
             putchar('\n');
@@ -281,10 +368,10 @@ cmd_cone(int argc, char ** argv)
         wc_fprint_json_string(stdout, mode);
         fputs(", \"cone\": ", stdout);
         wc_cone_fprint_json(stdout, W);
-        if (trace_on)
+        if (o.trace)
         {
             fprintf(stdout, ", \"method\": \"%s\", \"trace\": ",
-                    method == WC_METHOD_PAPER ? "paper" : "direct");
+                    o.method == WC_METHOD_PAPER ? "paper" : "direct");
             wc_trace_fprint_json(stdout, T);
         }
         fputs("}\n", stdout);
@@ -297,10 +384,10 @@ cmd_cone(int argc, char ** argv)
             if (title != NULL)
                 snprintf(title, len, "wrenchcone: W(%s), the wrench cone of mode %s",
                          mode, mode);
-            if (trace_on)
+            if (o.trace)
                 wc_trace_fprint_text(stdout, T, "* ");
-            wc_cone_fprint_cdd(stdout, W, title, fmt == FMT_INE ? 1
-                               : fmt == FMT_EXT ? 2 : 3);
+            wc_cone_fprint_cdd(stdout, W, title, o.fmt == FMT_INE ? 1
+                               : o.fmt == FMT_EXT ? 2 : 3);
             free(title);
         }
         break;
@@ -315,9 +402,94 @@ cleanup:
     return status;
 }
 
+static int
+cmd_modes(int argc, char ** argv)
+{
+    options o;
+    int status;
+    wc_problem_t P;
+    wc_error_t err;
+    wc_modes_t M;
+
+    if ((status = parse_options(&o, argc, argv, "modes", TAKES_WITNESS,
+                                usage_modes)) >= 0)
+        return status;
+    if (argc - optind != 1)
+        return usage_error("modes", argc - optind < 1
+                           ? "modes needs PROBLEM%s"
+                           : "modes takes PROBLEM only%s", "");
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_modes_init(M);
+    status = load_problem(P, argv[optind], err);
+    if (status == WC_OK)
+        status = wc_modes_enumerate(M, P, err);
+    if (status != WC_OK)
+        report(err, status);
+    else
+    {
+        wc_modes_fprint(stdout, M, o.fmt == FMT_JSON, o.witness);
+        status = finish_output();
+    }
+    wc_modes_clear(M);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}
+
+static int
+cmd_feasible(int argc, char ** argv)
+{
+    options o;
+    int status;
+    wc_problem_t P;
+    wc_error_t err;
+    wc_certificate_t C;
+
+    if ((status = parse_options(&o, argc, argv, "feasible", TAKES_CERT,
+                                usage_feasible)) >= 0)
+        return status;
+    if (argc - optind != 2)
+        return usage_error("feasible", argc - optind < 2
+                           ? "feasible needs PROBLEM and MODE%s"
+                           : "feasible takes PROBLEM and MODE only%s", "");
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_certificate_init(C);
+    status = load_problem(P, argv[optind], err);
+    if (status == WC_OK)
+        status = wc_feasible(C, P, argv[optind + 1], err);
+    if (status != WC_OK)
+    {
+        report(err, status);
+        goto cleanup;
+    }
+    if (o.certificate != NULL)
+    {
+        FILE * f = fopen(o.certificate, "w");
+
+        if (f == NULL || wc_certificate_fprint(f, C, P, 1) != WC_OK
+            || fclose(f) != 0)
+        {
+            fprintf(stderr, PROG ": %s: cannot write the certificate: %s\n",
+                    o.certificate, strerror(errno));
+            status = WC_EINTERNAL;
+            goto cleanup;
+        }
+    }
+    wc_certificate_fprint(stdout, C, P, o.fmt == FMT_JSON);
+    status = finish_output();
+
+cleanup:
+    wc_certificate_clear(C);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}
+
 static const char * const planned[] = {
-    "modes", "feasible", "classify", "stability", "plan", "sweep", "draw",
-    "compare", "verify", NULL
+    "classify", "stability", "plan", "sweep", "draw", "compare", "verify",
+    NULL
 };
 
 int
@@ -342,6 +514,10 @@ main(int argc, char ** argv)
     }
     if (strcmp(argv[1], "cone") == 0)
         status = cmd_cone(argc - 1, argv + 1);
+    else if (strcmp(argv[1], "modes") == 0)
+        status = cmd_modes(argc - 1, argv + 1);
+    else if (strcmp(argv[1], "feasible") == 0)
+        status = cmd_feasible(argc - 1, argv + 1);
     else
     {
         for (i = 0; planned[i] != NULL; i++)
