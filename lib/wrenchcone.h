@@ -19,6 +19,7 @@
 #include "cone.h"
 #include "wrench.h"
 #include "kinematics.h"
+#include "verify.h"
 #include "print.h"
 
 #ifdef __cplusplus
