@@ -12,7 +12,12 @@
    feasible set is a union of faces, and it is feasible iff some face's
    sign vector maps to it.  With P distinct planes there are at most
    P (P - 1) rays, as many arcs per plane as rays on it, and two chamber
-   sides per arc: O(n^2) faces, each read in O(n).  */
+   sides per arc: O(n^2) faces.  The walk around each plane keeps the sign
+   vector, the mode letters and a count of penetrated fixels up to date
+   one form at a time (crossing a ray changes only the forms of the planes
+   through it), so a penetrating face costs O(1) and only the others pay
+   O(n) for the exact lookup of their mode: O(n^2 + n F) in all, F the
+   number of non-penetrating faces.  */
 
 #include <config.h>
 
@@ -219,40 +224,6 @@ mode_set_add(mode_set * S, const char * s, const fmpz * w)
     S->count++;
 }
 
-/* The mode of a face from its sign vector (v_1n..v_nn, v_1t..v_nt);
-   0 when the face penetrates a touching fixel.  */
-static int
-face_mode(char * s, const int * sg, const wc_problem_t P)
-{
-    slong n = P->n, i;
-
-    for (i = 0; i < n; i++)
-    {
-        if (P->fixels[i].state == WC_NEAR)
-            s[i] = sg[i] < 0 ? 'a' : 's';
-        else if (sg[i] < 0)
-            return 0;
-        else if (sg[i] > 0)
-            s[i] = 's';
-        else
-            s[i] = sg[n + i] > 0 ? 'l' : sg[n + i] < 0 ? 'r' : 'n';
-    }
-    s[n] = '\0';
-    return 1;
-}
-
-static void
-signs(int * sg, const fmpz_mat_t a, const fmpz * v, fmpz_t t)
-{
-    slong k;
-
-    for (k = 0; k < fmpz_mat_nrows(a); k++)
-    {
-        _fmpz_vec_dot(t, ROW(a, k), v, 3);
-        sg[k] = fmpz_sgn(t);
-    }
-}
-
 static void
 cross(fmpz * c, const fmpz * x, const fmpz * y)
 {
@@ -264,12 +235,75 @@ cross(fmpz * c, const fmpz * x, const fmpz * y)
     fmpz_submul(c + 2, x + 1, y + 0);
 }
 
-static void
-primitive(fmpz * v, fmpz_t t)
+/* v := the primitive vector on its ray; with canon, the first nonzero
+   entry is made positive too (the same vector for v and -v), and the
+   return value says whether v was negated.  */
+static int
+primitive(fmpz * v, fmpz_t t, int canon)
 {
+    slong j;
+
     _fmpz_vec_content(t, v, 3);
     if (!fmpz_is_zero(t))
         _fmpz_vec_scalar_divexact_fmpz(v, v, 3, t);
+    if (!canon)
+        return 0;
+    for (j = 0; j < 2 && fmpz_is_zero(v + j); j++)
+        ;
+    if (fmpz_sgn(v + j) >= 0)
+        return 0;
+    _fmpz_vec_neg(v, v, 3);
+    return 1;
+}
+
+/* A set of 3-vectors (lines or planes, canonical up to sign) with ids:
+   open addressing on a hash of the entries.  */
+typedef struct
+{
+    slong size;         /* a power of two, at least twice count */
+    slong count;
+    slong * slot;
+    fmpz_mat_t v;       /* count rows in use */
+}
+vec_set;
+
+static void
+vec_set_init(vec_set * S, slong expect)
+{
+    slong i;
+
+    for (S->size = 16; S->size < 2 * expect + 2; S->size *= 2)
+        ;
+    S->count = 0;
+    S->slot = flint_malloc(sizeof(slong) * S->size);
+    for (i = 0; i < S->size; i++)
+        S->slot[i] = -1;
+    fmpz_mat_init(S->v, expect + 1, 3);
+}
+
+static void
+vec_set_clear(vec_set * S)
+{
+    flint_free(S->slot);
+    fmpz_mat_clear(S->v);
+}
+
+/* The id of v, added when new (room for expect entries was made).  */
+static slong
+vec_set_id(vec_set * S, const fmpz * v)
+{
+    ulong h = 0;
+    slong i, j;
+
+    for (j = 0; j < 3; j++)
+        h = h * UWORD(1000003) + fmpz_fdiv_ui(v + j, UWORD(4294967291));
+    for (i = (slong) (h & (S->size - 1)); S->slot[i] >= 0;
+         i = (i + 1) & (S->size - 1))
+        if (_fmpz_vec_equal(ROW(S->v, S->slot[i]), v, 3))
+            return S->slot[i];
+    _fmpz_vec_set(ROW(S->v, S->count), v, 3);
+    S->slot[i] = S->count;
+    return S->count++;
 }
 
 /* A ray on a plane with its position around the plane's normal: half 0
@@ -279,7 +313,7 @@ typedef struct
     int half;
     fmpz_t x;
     fmpz_t y;
-    slong ray;
+    slong ray;          /* 2 line + (0 for +line, 1 for -line) */
 }
 angle_ref;
 
@@ -300,49 +334,102 @@ angle_cmp(const void * p, const void * q)
     return s;
 }
 
-static int
-row_cmp(const void * p, const void * q)
-{
-    const fmpz * a = *(const fmpz * const *) p, * b = *(const fmpz * const *) q;
-    slong j;
-    int c;
-
-    for (j = 0; j < 3; j++)
-        if ((c = fmpz_cmp(a + j, b + j)) != 0)
-            return c;
-    return 0;
-}
-
+/* Growable lists of slong, one per index (CSR built at the end would do
+   too; these stay short).  */
 typedef struct
 {
-    const wc_problem_t * P;
-    const fmpz_mat_struct * a;
-    mode_set * S;
+    slong len;
+    slong alloc;
+    slong * x;
+}
+id_list;
+
+static void
+id_push(id_list * L, slong v)
+{
+    if (L->len == L->alloc)
+    {
+        L->alloc = L->alloc ? 2 * L->alloc : 4;
+        L->x = flint_realloc(L->x, sizeof(slong) * L->alloc);
+    }
+    L->x[L->len++] = v;
+}
+
+static int
+slong_cmp(const void * p, const void * q)
+{
+    slong a = *(const slong *) p, b = *(const slong *) q;
+
+    return (a > b) - (a < b);
+}
+
+static void
+id_sort_unique(id_list * L)
+{
+    slong i, j;
+
+    qsort(L->x, L->len, sizeof(slong), slong_cmp);
+    for (i = 0, j = 0; i < L->len; i++)
+        if (j == 0 || L->x[j - 1] != L->x[i])
+            L->x[j++] = L->x[i];
+    L->len = j;
+}
+
+/* The walk's state: the signs of the 2n forms at the current face, the
+   mode letters they give, and how many touching fixels they penetrate;
+   all kept up to date one sign at a time.  */
+typedef struct
+{
+    const wc_problem_struct * P;
+    slong n;
+    const fmpz_mat_struct * a;      /* 2n columns, primitive */
     int * sg;
-    char * s;
+    char * cur;                     /* n letters and a NUL */
+    slong pen;                      /* touching fixels with v_in < 0 */
+    mode_set * S;
     fmpz_t t;
 }
 walk;
 
-/* Record the face with sign vector W->sg; w is its witness (called only
-   when the mode is new).  */
 static void
-record(walk * W, const fmpz * w)
+set_letter(walk * W, slong i)
 {
-    if (face_mode(W->s, W->sg, *W->P)
-        && W->S->slot[mode_set_find(W->S, W->s)] < 0)
-        mode_set_add(W->S, W->s, w);
+    int sn = W->sg[i], st = W->sg[W->n + i];
+    int was = W->cur[i] == '-';
+
+    if (W->P->fixels[i].state == WC_NEAR)
+        W->cur[i] = sn < 0 ? 'a' : 's';
+    else if (sn < 0)
+        W->cur[i] = '-';
+    else if (sn > 0)
+        W->cur[i] = 's';
+    else
+        W->cur[i] = st > 0 ? 'l' : st < 0 ? 'r' : 'n';
+    W->pen += (W->cur[i] == '-') - was;
 }
 
-/* The two chambers beside the arc with midpoint m on the plane of normal
-   h: m +- t h with t below every |a_k . m| / |a_k . h|, so that no sign
-   of m changes but those of the plane's own columns.  */
 static void
-chambers(walk * W, const fmpz * m, const fmpz * h, const int * arc_sg)
+set_sign(walk * W, slong k, int s)
 {
-    slong K = fmpz_mat_nrows(W->a), k, side;
+    W->sg[k] = s;
+    set_letter(W, k % W->n);
+}
+
+/* 1 when the current face is not penetrating and its mode is new.  */
+static int
+is_new(walk * W)
+{
+    return W->pen == 0 && W->S->slot[mode_set_find(W->S, W->cur)] < 0;
+}
+
+/* Witness of a chamber beside the arc with midpoint m on the plane of
+   normal h: m + side t h with t below every |a_k . m| / |a_k . h|, so
+   that no sign of m changes but those of the plane's own columns.  */
+static void
+chamber_witness(fmpz * w, walk * W, const fmpz * m, const fmpz * h, int side)
+{
+    slong K = fmpz_mat_nrows(W->a), k;
     fmpz_t num, den, am, ah, c1, c2;
-    fmpz w[3];
 
     fmpz_init(num);
     fmpz_init(den);
@@ -350,8 +437,6 @@ chambers(walk * W, const fmpz * m, const fmpz * h, const int * arc_sg)
     fmpz_init(ah);
     fmpz_init(c1);
     fmpz_init(c2);
-    for (k = 0; k < 3; k++)
-        fmpz_init(w + k);
     fmpz_one(num);              /* t = num / den, start at 1 */
     fmpz_one(den);
     for (k = 0; k < K; k++)
@@ -363,7 +448,6 @@ chambers(walk * W, const fmpz * m, const fmpz * h, const int * arc_sg)
         fmpz_abs(am, am);
         fmpz_abs(ah, ah);
         fmpz_mul_ui(ah, ah, 2);
-        /* t := min(t, am / ah) */
         fmpz_mul(c1, am, den);
         fmpz_mul(c2, num, ah);
         if (fmpz_cmp(c1, c2) < 0)
@@ -372,40 +456,22 @@ chambers(walk * W, const fmpz * m, const fmpz * h, const int * arc_sg)
             fmpz_set(den, ah);
         }
     }
-    for (side = -1; side <= 1; side += 2)
+    for (k = 0; k < 3; k++)
     {
-        for (k = 0; k < K; k++)
-        {
-            W->sg[k] = arc_sg[k];
-            if (arc_sg[k] == 0)
-            {
-                _fmpz_vec_dot(ah, ROW(W->a, k), h, 3);
-                W->sg[k] = side * fmpz_sgn(ah);
-            }
-        }
-        if (!face_mode(W->s, W->sg, *W->P)
-            || W->S->slot[mode_set_find(W->S, W->s)] >= 0)
-            continue;
-        for (k = 0; k < 3; k++)
-        {
-            fmpz_mul(w + k, m + k, den);
-            fmpz_mul(c1, h + k, num);
-            if (side > 0)
-                fmpz_add(w + k, w + k, c1);
-            else
-                fmpz_sub(w + k, w + k, c1);
-        }
-        primitive(w, W->t);
-        mode_set_add(W->S, W->s, w);
+        fmpz_mul(w + k, m + k, den);
+        fmpz_mul(c1, h + k, num);
+        if (side > 0)
+            fmpz_add(w + k, w + k, c1);
+        else
+            fmpz_sub(w + k, w + k, c1);
     }
+    primitive(w, W->t, 0);
     fmpz_clear(num);
     fmpz_clear(den);
     fmpz_clear(am);
     fmpz_clear(ah);
     fmpz_clear(c1);
     fmpz_clear(c2);
-    for (k = 0; k < 3; k++)
-        fmpz_clear(w + k);
 }
 
 void
@@ -442,126 +508,199 @@ mode_ref_cmp(const void * p, const void * q)
     return strcmp(((const mode_ref *) p)->s, ((const mode_ref *) q)->s);
 }
 
-int
-wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err)
+static void
+enumerate(wc_modes_t M, const wc_problem_t P)
 {
-    slong n = P->n, K = 2 * n, np = 0, nr = 0, i, j, k, p, q;
-    fmpz_mat_t a, planes, rays;
-    const fmpz ** order = NULL;
-    int * arc_sg = flint_malloc(sizeof(int) * (K + 1));
+    slong n = P->n, K = 2 * n, np, nl, i, j, k, p, q, c, z;
+    fmpz_mat_t a;
     fmpz * v = _fmpz_vec_init(3), * u = _fmpz_vec_init(3),
-        * w = _fmpz_vec_init(3), * mid = _fmpz_vec_init(3);
-    angle_ref * ang = NULL;
+        * w = _fmpz_vec_init(3), * mid = _fmpz_vec_init(3),
+        * next = _fmpz_vec_init(3), * wit = _fmpz_vec_init(3);
+    int * sgnf = flint_malloc(sizeof(int) * (K + 1)), * done;
+    slong * plane_of = flint_malloc(sizeof(slong) * (K + 1));
+    id_list * cols, * lines_on, * planes_on;
+    angle_ref * ang;
+    vec_set planes, lines;
     mode_set S;
     mode_ref * ref;
     walk W;
 
-    (void) err;
     mode_set_init(&S, n);
     fmpz_mat_init(a, K, 3);
     columns(a, P);
-    W.P = (const wc_problem_t *) P;
+    W.P = P;
+    W.n = n;
     W.a = a;
     W.S = &S;
     W.sg = flint_malloc(sizeof(int) * (K + 1));
-    W.s = flint_malloc(n + 1);
+    W.cur = flint_malloc(n + 1);
+    W.cur[n] = '\0';
+    W.pen = 0;
     fmpz_init(W.t);
 
-    /* The origin.  */
+    /* The origin: every form is zero.  */
+    for (i = 0; i < n; i++)
+        W.cur[i] = ' ';
     for (k = 0; k < K; k++)
-        W.sg[k] = 0;
-    record(&W, v);
+        set_sign(&W, k, 0);
+    if (is_new(&W))
+        mode_set_add(&S, W.cur, v);
 
-    /* Distinct planes: each column up to sign.  */
-    fmpz_mat_init(planes, K, 3);
+    /* Distinct planes (a column up to sign) and their columns.  */
+    vec_set_init(&planes, K);
     for (k = 0; k < K; k++)
     {
         _fmpz_vec_set(v, ROW(a, k), 3);
-        for (j = 0; fmpz_is_zero(v + j); j++)
-            ;
-        if (fmpz_sgn(v + j) < 0)
-            _fmpz_vec_neg(v, v, 3);
-        for (p = 0; p < np && !_fmpz_vec_equal(ROW(planes, p), v, 3); p++)
-            ;
-        if (p == np)
-            _fmpz_vec_set(ROW(planes, np++), v, 3);
+        sgnf[k] = primitive(v, W.t, 1) ? -1 : 1;
+        plane_of[k] = vec_set_id(&planes, v);
     }
+    np = planes.count;
+    cols = flint_calloc(np + 1, sizeof(id_list));
+    for (k = 0; k < K; k++)
+        id_push(cols + plane_of[k], k);
 
-    /* Rays: +- the line where two planes meet, without repeats.  */
-    fmpz_mat_init(rays, np * (np - 1) + 1, 3);
+    /* Lines where planes meet (up to sign), with the planes on each line
+       and the lines on each plane: O(P^2), however degenerate.  */
+    vec_set_init(&lines, np * (np - 1) / 2 + 1);
+    lines_on = flint_calloc(np + 1, sizeof(id_list));
+    planes_on = flint_calloc(np * (np - 1) / 2 + 1, sizeof(id_list));
     for (p = 0; p < np; p++)
         for (q = p + 1; q < np; q++)
         {
-            cross(v, ROW(planes, p), ROW(planes, q));
-            primitive(v, W.t);
-            _fmpz_vec_set(ROW(rays, nr++), v, 3);
-            _fmpz_vec_neg(ROW(rays, nr++), v, 3);
-        }
-    order = flint_malloc(sizeof(fmpz *) * (nr + 1));
-    for (i = 0; i < nr; i++)
-        order[i] = ROW(rays, i);
-    qsort(order, nr, sizeof(fmpz *), row_cmp);
-    for (i = 0, j = 0; i < nr; i++)
-        if (j == 0 || row_cmp(order + j - 1, order + i) != 0)
-            order[j++] = order[i];
-    nr = j;
-    for (i = 0; i < nr; i++)
-    {
-        signs(W.sg, a, order[i], W.t);
-        record(&W, order[i]);
-    }
+            slong l;
 
-    /* Arcs of each plane between consecutive rays, and the chambers on
-       both sides of each arc.  Every plane holds at least one line (two
-       columns of a fixel are never parallel, so there are >= 2 planes).  */
-    ang = flint_malloc(sizeof(angle_ref) * (nr + 1));
-    for (i = 0; i < nr; i++)
+            cross(v, ROW(planes.v, p), ROW(planes.v, q));
+            primitive(v, W.t, 1);
+            l = vec_set_id(&lines, v);
+            id_push(lines_on + p, l);
+            id_push(lines_on + q, l);
+            id_push(planes_on + l, p);
+            id_push(planes_on + l, q);
+        }
+    nl = lines.count;
+    for (p = 0; p < np; p++)
+        id_sort_unique(lines_on + p);
+    for (i = 0; i < nl; i++)
+        id_sort_unique(planes_on + i);
+    done = flint_calloc(2 * nl + 1, sizeof(int));
+
+    /* Walk around each plane: its rays in angular order, the arcs between
+       them and the chambers on both sides of each arc.  Only the forms of
+       the planes through a crossed ray change sign.  Every plane holds at
+       least one line (the two columns of a fixel are never parallel).  */
+    ang = flint_malloc(sizeof(angle_ref) * (2 * nl + 2));
+    for (i = 0; i < 2 * nl + 2; i++)
     {
         fmpz_init(ang[i].x);
         fmpz_init(ang[i].y);
     }
     for (p = 0; p < np; p++)
     {
-        const fmpz * h = ROW(planes, p);
-        slong c = 0;
+        const fmpz * h = ROW(planes.v, p);
 
-        for (i = 0; i < nr; i++)
+        c = 0;
+        for (i = 0; i < lines_on[p].len; i++)
         {
-            _fmpz_vec_dot(W.t, h, order[i], 3);
-            if (fmpz_is_zero(W.t))
-                ang[c++].ray = i;
+            ang[c++].ray = 2 * lines_on[p].x[i];
+            ang[c++].ray = 2 * lines_on[p].x[i] + 1;
         }
-        /* Basis (u, w) of the plane, w = h x u: counter-clockwise seen
-           from h.  */
-        _fmpz_vec_set(u, order[ang[0].ray], 3);
+        /* Basis (u, w = h x u) of the plane: counter-clockwise seen from
+           h.  */
+        _fmpz_vec_set(u, ROW(lines.v, lines_on[p].x[0]), 3);
         cross(w, h, u);
         for (i = 0; i < c; i++)
         {
-            _fmpz_vec_dot(ang[i].x, order[ang[i].ray], u, 3);
-            _fmpz_vec_dot(ang[i].y, order[ang[i].ray], w, 3);
+            const fmpz * r = ROW(lines.v, ang[i].ray / 2);
+            int s = (ang[i].ray & 1) ? -1 : 1;
+
+            _fmpz_vec_dot(ang[i].x, r, u, 3);
+            _fmpz_vec_dot(ang[i].y, r, w, 3);
+            fmpz_mul_si(ang[i].x, ang[i].x, s);
+            fmpz_mul_si(ang[i].y, ang[i].y, s);
             ang[i].half = !(fmpz_sgn(ang[i].y) > 0
                             || (fmpz_is_zero(ang[i].y) && fmpz_sgn(ang[i].x) > 0));
         }
         qsort(ang, c, sizeof(angle_ref), angle_cmp);
+
         for (i = 0; i < c; i++)
         {
-            const fmpz * r1 = order[ang[i].ray], * r2 = order[ang[(i + 1) % c].ray];
-
-            if (c == 2)         /* one line: two half-planes, midpoints +-w */
-            {
+            /* mid: a point of arc i, from ray i to ray i + 1.  */
+            if (c == 2)
                 _fmpz_vec_scalar_mul_si(mid, w, 3, i == 0 ? 1 : -1);
-                primitive(mid, W.t);
-            }
             else
             {
-                _fmpz_vec_add(mid, r1, r2, 3);
-                primitive(mid, W.t);
+                _fmpz_vec_scalar_mul_si(mid, ROW(lines.v, ang[i].ray / 2), 3,
+                                        (ang[i].ray & 1) ? -1 : 1);
+                z = ang[(i + 1) % c].ray;
+                _fmpz_vec_scalar_addmul_si(mid, ROW(lines.v, z / 2), 3,
+                                           (z & 1) ? -1 : 1);
             }
-            signs(arc_sg, a, mid, W.t);
+            primitive(mid, W.t, 0);
+            if (i == 0)
+                for (k = 0; k < K; k++)
+                {
+                    _fmpz_vec_dot(W.t, ROW(a, k), mid, 3);
+                    set_sign(&W, k, fmpz_sgn(W.t));
+                }
+            if (is_new(&W))
+                mode_set_add(&S, W.cur, mid);
+            /* The chambers: the plane's own forms leave zero.  */
+            for (z = -1; z <= 1; z += 2)
+            {
+                for (j = 0; j < cols[p].len; j++)
+                    set_sign(&W, cols[p].x[j], z * sgnf[cols[p].x[j]]);
+                if (is_new(&W))
+                {
+                    chamber_witness(wit, &W, mid, h, z);
+                    mode_set_add(&S, W.cur, wit);
+                }
+            }
+            for (j = 0; j < cols[p].len; j++)
+                set_sign(&W, cols[p].x[j], 0);
+            if (i + 1 == c)
+                break;
+            /* Cross ray i + 1: the forms of the planes through it are zero
+               there, then take their signs on the next arc.  */
+            z = ang[i + 1].ray;
+            _fmpz_vec_scalar_mul_si(v, ROW(lines.v, z / 2), 3, (z & 1) ? -1 : 1);
+            for (j = 0; j < planes_on[z / 2].len; j++)
+                for (q = planes_on[z / 2].x[j], k = 0; q != p && k < cols[q].len; k++)
+                    set_sign(&W, cols[q].x[k], 0);
+            if (!done[z])
+            {
+                done[z] = 1;
+                if (is_new(&W))
+                    mode_set_add(&S, W.cur, v);
+            }
+            if (c == 2)
+                _fmpz_vec_scalar_mul_si(next, w, 3, -1);
+            else
+            {
+                _fmpz_vec_set(next, v, 3);
+                q = ang[(i + 2) % c].ray;
+                _fmpz_vec_scalar_addmul_si(next, ROW(lines.v, q / 2), 3,
+                                           (q & 1) ? -1 : 1);
+            }
+            for (j = 0; j < planes_on[z / 2].len; j++)
+                for (q = planes_on[z / 2].x[j], k = 0; q != p && k < cols[q].len; k++)
+                {
+                    _fmpz_vec_dot(W.t, ROW(a, cols[q].x[k]), next, 3);
+                    set_sign(&W, cols[q].x[k], fmpz_sgn(W.t));
+                }
+        }
+        /* Ray 0 of this plane, met only as a start: record it too.  */
+        z = ang[0].ray;
+        if (!done[z])
+        {
+            done[z] = 1;
+            _fmpz_vec_scalar_mul_si(v, ROW(lines.v, z / 2), 3, (z & 1) ? -1 : 1);
             for (k = 0; k < K; k++)
-                W.sg[k] = arc_sg[k];
-            record(&W, mid);
-            chambers(&W, mid, h, arc_sg);
+            {
+                _fmpz_vec_dot(W.t, ROW(a, k), v, 3);
+                set_sign(&W, k, fmpz_sgn(W.t));
+            }
+            if (is_new(&W))
+                mode_set_add(&S, W.cur, v);
         }
     }
 
@@ -587,26 +726,48 @@ wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err)
     }
 
     flint_free(ref);
-    for (i = 0; i < nr; i++)
+    for (i = 0; i < 2 * nl + 2; i++)
     {
         fmpz_clear(ang[i].x);
         fmpz_clear(ang[i].y);
     }
     flint_free(ang);
-    flint_free(order);
-    flint_free(arc_sg);
+    for (p = 0; p < np; p++)
+    {
+        flint_free(cols[p].x);
+        flint_free(lines_on[p].x);
+    }
+    for (i = 0; i < np * (np - 1) / 2 + 1; i++)
+        flint_free(planes_on[i].x);
+    flint_free(cols);
+    flint_free(lines_on);
+    flint_free(planes_on);
+    flint_free(done);
+    flint_free(sgnf);
+    flint_free(plane_of);
     flint_free(W.sg);
-    flint_free(W.s);
+    flint_free(W.cur);
     fmpz_clear(W.t);
     _fmpz_vec_clear(v, 3);
     _fmpz_vec_clear(u, 3);
     _fmpz_vec_clear(w, 3);
     _fmpz_vec_clear(mid, 3);
+    _fmpz_vec_clear(next, 3);
+    _fmpz_vec_clear(wit, 3);
     fmpz_mat_clear(a);
-    fmpz_mat_clear(planes);
-    fmpz_mat_clear(rays);
+    vec_set_clear(&planes);
+    vec_set_clear(&lines);
     mode_set_clear(&S);
-    return WC_OK;
+}
+
+int
+wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err)
+{
+    int status = wc_problem_check(P, err);
+
+    if (status == WC_OK)
+        enumerate(M, P);
+    return status;
 }
 
 /* ---------------------------------------------------------------------
@@ -715,6 +876,10 @@ wc_feasible(wc_certificate_t C, const wc_problem_t P, const char * mode,
     {
         C->feasible = 1;
         fmpq_vec_primitive(C->witness, x, 3);
+        if (!wc_certificate_check(C))
+            status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                  "internal error: the witness of %s fails",
+                                  mode);
         goto cleanup;
     }
 

@@ -34,7 +34,7 @@ const char * wc_relation_str(wc_relation r);
 /* The constraint rows of mode on the twist, in fixel order (for each
    fixel: its normal row, then its tangential row when the letter
    constrains it).  rows is resized to m x 3; *rel is malloc'd with m
-   entries (caller frees).  The mode must pass wc_mode_check with
+   entries (caller frees with free()).  The mode must pass wc_mode_check with
    WC_TABLE_KINEMATIC; returns WC_EINPUT otherwise.  */
 int wc_mode_constraints(fmpz_mat_t rows, wc_relation ** rel,
                         const wc_problem_t P, const char * mode,
@@ -59,8 +59,11 @@ void wc_modes_clear(wc_modes_t M);
 /* Enumerate the feasible modes by the faces of the central arrangement of
    the 2n planes J_k . nu = 0 in R^3 (O(n^2) faces: the origin, the rays
    where planes meet, the arcs between them, the chambers), mapping each
-   non-penetrating face to its mode.  Never looks at the 4^n strings.
-   Returns WC_OK (M filled) or WC_EINTERNAL.  */
+   non-penetrating face to its mode.  Never looks at the 4^n strings; time
+   O(n^2 + n F), F the number of non-penetrating faces (at most O(n^2),
+   and few when many fixels touch).  M may hold an earlier result (it is
+   replaced).  Returns WC_OK (M filled) or
+   WC_EINPUT when wc_problem_check fails.  */
 int wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err);
 
 /* The certificate of one mode: either a witness twist (primitive
@@ -84,12 +87,18 @@ typedef wc_certificate_struct wc_certificate_t[1];
 void wc_certificate_init(wc_certificate_t C);
 void wc_certificate_clear(wc_certificate_t C);
 
-/* Decide mode (Table 1 letters) for P and fill C.  Returns WC_OK,
-   WC_EINPUT for a bad mode (err located in "<mode>"), or WC_EINTERNAL.  */
+/* Decide mode (Table 1 letters) for P and fill C (which may hold an
+   earlier certificate: it is replaced).  The certificate is checked with
+   wc_certificate_check before it is returned.  Returns WC_OK, WC_EINPUT
+   for a bad problem or mode (err located in "<mode>" for the mode), or
+   WC_EINTERNAL.  */
 int wc_feasible(wc_certificate_t C, const wc_problem_t P, const char * mode,
                 wc_error_t err);
 
-/* 1 when C holds (checked with exact integer arithmetic), else 0.  */
+/* 1 when C holds (checked with exact integer arithmetic), else 0: when
+   feasible, the witness satisfies every row (it need not be primitive);
+   when not, the multipliers satisfy the three Motzkin conditions (the
+   witness is ignored).  */
 int wc_certificate_check(const wc_certificate_t C);
 
 #ifdef __cplusplus

@@ -31,7 +31,10 @@ wc_mode_check(const wc_problem_t P, const char * mode, wc_mode_table table,
 {
     size_t len = strlen(mode);
     size_t i;
+    int status;
 
+    if ((status = wc_problem_check(P, err)) != WC_OK)
+        return status;
     /* The length is checked first: with a letter missing or extra, the
        letters after it would be read against the wrong fixels.  */
     if (len != (size_t) P->n)
@@ -62,6 +65,37 @@ wc_mode_check(const wc_problem_t P, const char * mode, wc_mode_table table,
                                 "letter '%c' not allowed on fixel %lu, which "
                                 "is %s", c, (unsigned long) i + 1,
                                 state == WC_NEAR ? "near" : "touching");
+    }
+    return WC_OK;
+}
+
+int
+wc_problem_check(const wc_problem_t P, wc_error_t err)
+{
+    slong i;
+
+    if (P->n < 1 || P->fixels == NULL)
+        return wc_error_set(err, WC_EINPUT, P->file, 0, 0,
+                            "no fixel in the problem");
+    if (fmpq_sgn(P->mass) <= 0)
+        return wc_error_set(err, WC_EINPUT, P->file, 0, 0,
+                            "mass must be positive");
+    if (fmpq_sgn(P->inertia) <= 0)
+        return wc_error_set(err, WC_EINPUT, P->file, 0, 0,
+                            "inertia must be positive");
+    for (i = 0; i < P->n; i++)
+    {
+        const wc_fixel_struct * f = P->fixels + i;
+
+        if (fmpq_is_zero(f->normal + 0) && fmpq_is_zero(f->normal + 1))
+            return wc_error_set(err, WC_EINPUT, P->file, f->line, f->col,
+                                "fixel %ld has a zero normal", (long) i + 1);
+        if (fmpq_sgn(f->mu_s) < 0 || fmpq_sgn(f->mu_k) < 0)
+            return wc_error_set(err, WC_EINPUT, P->file, f->line, f->col,
+                                "fixel %ld has negative friction", (long) i + 1);
+        if (f->state != WC_TOUCHING && f->state != WC_NEAR)
+            return wc_error_set(err, WC_EINPUT, P->file, f->line, f->col,
+                                "fixel %ld has an unknown state", (long) i + 1);
     }
     return WC_OK;
 }

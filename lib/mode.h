@@ -19,7 +19,7 @@ extern "C" {
    on touching fixels, s a on near ones.  */
 typedef enum { WC_TABLE_CONE = 2, WC_TABLE_KINEMATIC = 1 } wc_mode_table;
 
-/* Check that mode has one letter per fixel of P, each allowed in that
+/* Check P (wc_problem_check) and that mode has one letter per fixel of P, each allowed in that
    fixel's state under the given table.  Returns WC_OK, or WC_EINPUT with
    err located in the mode string itself: file "<mode>", line 1, col the
    1-based position of the offending letter (or one past the end for a

@@ -88,6 +88,14 @@ wc_fixel_struct * wc_problem_add_fixel(wc_problem_t P);
    out).  Returns WC_OK or WC_EINTERNAL on a write error.  */
 int wc_problem_fprint(FILE * out, const wc_problem_t P);
 
+/* Check a problem built by a program rather than the parser (the parser
+   guarantees all this): at least one fixel, nonzero normals, mass and
+   inertia positive, friction non-negative, states touching or near.
+   Returns WC_OK or WC_EINPUT with err saying which.  Every library entry
+   point that takes a problem calls it, so that bad data is an error, never
+   an abort.  */
+int wc_problem_check(const wc_problem_t P, wc_error_t err);
+
 /* Parse one exact number: an optional sign, then an integer, a fraction
    p/q, or a decimal with optional exponent (0.2 = 1/5, 1.5e-3 = 3/2000).
    The whole of s[0..len) must be the number.  Returns WC_OK, or WC_EINPUT

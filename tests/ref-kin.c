@@ -421,7 +421,8 @@ ref_modes_bruteforce(char *** modes, slong * count, const wc_problem_t P)
         int r;
 
         for (i = 0; i < n; i++)
-            mode[i] = (P->fixels[i].state == WC_NEAR ? "as" : "lnrs")[digit[i]];
+            mode[i] = (P->fixels[i].state == WC_NEAR ? "as"
+                       : "lnrs")[digit[i]];
         mode[n] = '\0';
         r = ref_mode_feasible(P, mode);
         if (r < 0)

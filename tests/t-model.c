@@ -180,6 +180,34 @@ main(void)
         }
     }
 
+    /* A problem built through the API is checked, not trusted: no fixel,
+       or a zero normal, is bad input for every entry point -- never an
+       abort inside FLINT.  */
+    {
+        wc_problem_t Q;
+        wc_modes_t Mo;
+        wc_certificate_t Ce;
+
+        wc_problem_init(Q);
+        wc_modes_init(Mo);
+        wc_certificate_init(Ce);
+        wc_cone_init(Wd, 3);
+        if (wc_modes_enumerate(Mo, Q, err) != WC_EINPUT
+            || wc_feasible(Ce, Q, "", err) != WC_EINPUT
+            || wc_wrench_cone(Wd, NULL, Q, "", WC_METHOD_DIRECT, err) != WC_EINPUT)
+            wctest_fail("an empty problem is accepted");
+        wc_problem_add_fixel(Q);        /* normal (0, 0) */
+        if (wc_modes_enumerate(Mo, Q, err) != WC_EINPUT
+            || wc_feasible(Ce, Q, "s", err) != WC_EINPUT
+            || wc_wrench_cone(Wd, NULL, Q, "s", WC_METHOD_PAPER, err) != WC_EINPUT
+            || strstr(err->message, "zero normal") == NULL)
+            wctest_fail("a zero normal is accepted");
+        wc_cone_clear(Wd);
+        wc_certificate_clear(Ce);
+        wc_modes_clear(Mo);
+        wc_problem_clear(Q);
+    }
+
     /* Scaling a normal by a positive rational changes nothing (SPEC 2).  */
     fmpq_set_si(P->fixels[0].normal + 1, 7, 3);
     fmpq_set_si(P->fixels[1].normal + 0, -5, 1);

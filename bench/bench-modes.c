@@ -1,0 +1,296 @@
+/* bench-modes.c -- time wc_modes_enumerate (the arrangement of the 2n
+   planes J_k . nu = 0) against brute force over the 4^n mode strings.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Usage: bench-modes [SECONDS_PER_CELL] [MAXN_BRUTE]
+   Problems: n touching fixels at distinct rational points of the unit
+   circle, every normal the inward radial direction tilted by a different
+   rational amount, so that the normal lines do not meet in one point and
+   the 2n planes are in general position (checked: no three columns of J
+   are linearly dependent).  Each
+   wc_modes_enumerate cell is the mean over repeated runs of at least
+   SECONDS_PER_CELL (default 0.2 s); brute force (tests/ref-kin.c: one
+   exact LP per string) runs once per size up to MAXN_BRUTE (default 8)
+   fixels, repeated only while shorter than the budget.  Where both run,
+   their lists must be equal (exit 3 otherwise).  Ratios measured in this
+   one process are the numbers to compare, not the absolute times.  The
+   last line is "modes speed-up over brute force at n=8: X x".  */
+
+#include <config.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <flint/flint.h>
+#include <flint/fmpz.h>
+#include <flint/fmpq.h>
+
+#include "wrenchcone.h"
+#include "kinematics.h"
+#include "ref-kin.h"
+
+static double
+now(void)
+{
+    struct timespec t;
+
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+/* Fixel k: t = (k + 1) / (n - k + 1), the circle point
+   ((1 - t^2), 2 t) / (1 + t^2), at an angle in (0, pi) increasing with k:
+   all on the upper half, so that the part can still move (down, and
+   rolling) and the list of modes grows with n instead of collapsing to
+   n..n as it would with the part held all round.  The normal is
+   -p + c_k p^perp with c_k = (-1)^k / (k + 3).  */
+static void
+make_problem(wc_problem_t P, slong n)
+{
+    fmpq_t t, t2, den, c;
+    slong k;
+
+    fmpq_init(t);
+    fmpq_init(t2);
+    fmpq_init(den);
+    fmpq_init(c);
+    fmpq_set_si(P->com + 0, 1, 7);
+    fmpq_set_si(P->com + 1, -1, 9);
+    for (k = 0; k < n; k++)
+    {
+        wc_fixel_struct * f = wc_problem_add_fixel(P);
+        fmpq * p = f->point, * d = f->normal;
+
+        fmpq_set_si(t, k + 1, (ulong) (n - k + 1));
+        fmpq_mul(t2, t, t);
+        fmpq_add_si(den, t2, 1);
+        fmpq_neg(p + 0, t2);
+        fmpq_add_si(p + 0, p + 0, 1);
+        fmpq_div(p + 0, p + 0, den);
+        fmpq_mul_si(p + 1, t, 2);
+        fmpq_div(p + 1, p + 1, den);
+        /* d = -p + c (-p_y, p_x) */
+        fmpq_set_si(c, k % 2 ? -1 : 1, (ulong) (k + 3));
+        fmpq_mul(d + 0, c, p + 1);
+        fmpq_add(d + 0, d + 0, p + 0);
+        fmpq_neg(d + 0, d + 0);
+        fmpq_mul(d + 1, c, p + 0);
+        fmpq_sub(d + 1, d + 1, p + 1);
+        f->state = WC_TOUCHING;
+    }
+    fmpq_clear(t);
+    fmpq_clear(t2);
+    fmpq_clear(den);
+    fmpq_clear(c);
+}
+
+/* 1 when no three of the 2n columns of J (read from the constraint rows
+   of the mode l..l, which are J_in and J_it up to positive scaling) are
+   linearly dependent: the arrangement is in general position.  */
+static int
+general_position(const wc_problem_t P)
+{
+    slong n = P->n, m, a, b, c;
+    char * mode = malloc(n + 1);
+    fmpz_mat_t rows;
+    wc_relation * rel = NULL;
+    wc_error_t err;
+    fmpz_t d, x;
+    int ok = 1;
+
+    memset(mode, 'l', n);
+    mode[n] = '\0';
+    fmpz_mat_init(rows, 0, 3);
+    wc_error_init(err);
+    fmpz_init(d);
+    fmpz_init(x);
+    if (wc_mode_constraints(rows, &rel, P, mode, err) != WC_OK)
+        ok = 0;
+    m = fmpz_mat_nrows(rows);
+    for (a = 0; a < m && ok; a++)
+        for (b = a + 1; b < m && ok; b++)
+        {
+            const fmpz * u = rows->rows[a], * v = rows->rows[b];
+            fmpz cr[3];
+
+            /* u x v, then its dot with every later row */
+            fmpz_init(cr + 0);
+            fmpz_init(cr + 1);
+            fmpz_init(cr + 2);
+            fmpz_mul(cr + 0, u + 1, v + 2);
+            fmpz_submul(cr + 0, u + 2, v + 1);
+            fmpz_mul(cr + 1, u + 2, v + 0);
+            fmpz_submul(cr + 1, u + 0, v + 2);
+            fmpz_mul(cr + 2, u + 0, v + 1);
+            fmpz_submul(cr + 2, u + 1, v + 0);
+            if (fmpz_is_zero(cr + 0) && fmpz_is_zero(cr + 1)
+                && fmpz_is_zero(cr + 2))
+                ok = 0;
+            for (c = b + 1; c < m && ok; c++)
+            {
+                const fmpz * w = rows->rows[c];
+
+                fmpz_mul(d, cr + 0, w + 0);
+                fmpz_mul(x, cr + 1, w + 1);
+                fmpz_add(d, d, x);
+                fmpz_mul(x, cr + 2, w + 2);
+                fmpz_add(d, d, x);
+                ok = !fmpz_is_zero(d);
+            }
+            fmpz_clear(cr + 0);
+            fmpz_clear(cr + 1);
+            fmpz_clear(cr + 2);
+        }
+    fmpz_clear(d);
+    fmpz_clear(x);
+    free(rel);
+    fmpz_mat_clear(rows);
+    wc_error_clear(err);
+    free(mode);
+    return ok;
+}
+
+/* Mean seconds per wc_modes_enumerate; the last result stays in M.  */
+static double
+time_enumerate(wc_modes_t M, const wc_problem_t P, double budget)
+{
+    wc_error_t err;
+    double t0 = now(), t;
+    long reps = 0;
+
+    wc_error_init(err);
+    do
+    {
+        if (wc_modes_enumerate(M, P, err) != WC_OK)
+        {
+            fprintf(stderr, "bench-modes: %s\n",
+                    err->message ? err->message : "wc_modes_enumerate failed");
+            exit(3);
+        }
+        reps++;
+        t = now() - t0;
+    }
+    while (t < budget);
+    wc_error_clear(err);
+    return t / reps;
+}
+
+/* Mean seconds per brute force; the list of the last run is returned.  */
+static double
+time_brute(char *** modes, slong * count, const wc_problem_t P,
+           double budget)
+{
+    double t0 = now(), t;
+    long reps = 0;
+
+    *modes = NULL;
+    *count = 0;
+    do
+    {
+        ref_modes_free(*modes, *count);
+        if (ref_modes_bruteforce(modes, count, P) != 0)
+        {
+            fprintf(stderr, "bench-modes: the brute-force LP failed\n");
+            exit(3);
+        }
+        reps++;
+        t = now() - t0;
+    }
+    while (t < budget);
+    return t / reps;
+}
+
+int
+main(int argc, char ** argv)
+{
+    static const slong sizes[] = { 5, 6, 7, 8, 10, 20, 50, 100 };
+    const slong nsizes = (slong) (sizeof sizes / sizeof sizes[0]);
+    double budget = argc > 1 ? atof(argv[1]) : 0.2;
+    slong maxbrute = argc > 2 ? atol(argv[2]) : 8;
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, speedup8 = 0;
+    slong npts = 0, s, i;
+
+    if (budget <= 0 || maxbrute < 0)
+    {
+        fprintf(stderr, "usage: bench-modes [SECONDS_PER_CELL] "
+                "[MAXN_BRUTE]\n");
+        return 2;
+    }
+    wc_init();
+    printf("Kinematically feasible modes of n touching fixels in general "
+           "position:\nwc_modes_enumerate (arrangement of the 2n planes) vs "
+           "brute force (one exact LP per string).\n");
+    printf("%4s  %7s  %14s  %16s  %10s  %s\n", "n", "modes", "enumerate ms",
+           "brute force ms", "speed-up", "planes");
+    for (s = 0; s < nsizes; s++)
+    {
+        slong n = sizes[s];
+        wc_problem_t P;
+        wc_modes_t M;
+        double te, tb = 0;
+        int gp;
+
+        wc_problem_init(P);
+        wc_modes_init(M);
+        make_problem(P, n);
+        gp = general_position(P);
+        te = time_enumerate(M, P, budget);
+        if (n <= maxbrute)
+        {
+            char ** list;
+            slong count;
+
+            tb = time_brute(&list, &count, P, budget);
+            if (count != M->count)
+            {
+                fprintf(stderr, "bench-modes: n=%ld: %ld modes enumerated, "
+                        "%ld by brute force\n", (long) n, (long) M->count,
+                        (long) count);
+                return 3;
+            }
+            for (i = 0; i < count; i++)
+                if (strcmp(list[i], M->modes[i]) != 0)
+                {
+                    fprintf(stderr, "bench-modes: n=%ld: lists differ at "
+                            "%s / %s\n", (long) n, M->modes[i], list[i]);
+                    return 3;
+                }
+            ref_modes_free(list, count);
+            printf("%4ld  %7ld  %14.3f  %16.1f  %9.0fx  %s\n", (long) n,
+                   (long) M->count, 1e3 * te, 1e3 * tb, tb / te,
+                   gp ? "general" : "DEGENERATE");
+            if (n == 8)
+                speedup8 = tb / te;
+        }
+        else
+            printf("%4ld  %7ld  %14.3f  %16s  %10s  %s\n", (long) n,
+                   (long) M->count, 1e3 * te, "-", "-",
+                   gp ? "general" : "DEGENERATE");
+        if (n >= 10)
+        {
+            double x = log((double) n), y = log(te);
+
+            sx += x;
+            sy += y;
+            sxx += x * x;
+            sxy += x * y;
+            npts++;
+        }
+        wc_modes_clear(M);
+        wc_problem_clear(P);
+    }
+    if (npts >= 2)
+        printf("growth exponent of enumerate time, n = 10..100 (least-squares "
+               "slope of log time vs log n): %.2f\n",
+               (npts * sxy - sx * sy) / (npts * sxx - sx * sx));
+    if (maxbrute >= 8)
+        printf("modes speed-up over brute force at n=8: %.0f x\n", speedup8);
+    flint_cleanup_master();
+    return 0;
+}
