@@ -20,6 +20,7 @@
 #include "wrench.h"
 #include "kinematics.h"
 #include "verify.h"
+#include "random.h"
 #include "print.h"
 
 #ifdef __cplusplus

@@ -35,6 +35,7 @@ usage(FILE * out)
           "  modes PROBLEM          every kinematically feasible contact mode\n"
           "  feasible PROBLEM MODE  one mode's verdict, with a checkable certificate\n"
           "  verify CERTFILE        re-check a certificate with GMP arithmetic alone\n"
+          "  random [OPTIONS]       print a reproducible random problem (a .wc file)\n"
           "\n"
           "PROBLEM is a .wc problem file (see wrenchcone(5)); '-' reads standard input.\n"
           "Options of every command: --format=text|json, -h/--help, -V/--version.\n"
@@ -114,6 +115,30 @@ usage_verify(FILE * out)
           "\n"
           "Options:\n"
           "  --format=FMT     text (default) or json\n"
+          "  -h, --help       print this help and exit\n"
+          "  -V, --version    print versions and exit\n", out);
+}
+
+static void
+usage_random(FILE * out)
+{
+    fputs("Usage: " PROG " random [OPTIONS]\n"
+          "Print a random problem as a .wc file, the same bytes for the same options\n"
+          "on every platform; the first line is a comment naming the command that\n"
+          "reproduces it.\n"
+          "\n"
+          "Options:\n"
+          "  --fixels=N       the number of fixels, 1 to 1000 (default 3)\n"
+          "  --seed=S         the seed, a decimal integer below 2^64 (default 1)\n"
+          "  --degenerate     plant degenerate features: two fixels at one point,\n"
+          "                   normals parallel or opposed, normals 10^-9 apart,\n"
+          "                   three collinear contact points\n"
+          "  --shape=SHAPE    none (default), disk or polygon: points on the shape's\n"
+          "                   boundary, with its exact inward normals\n"
+          "  --friction=MU[,MUK]\n"
+          "                   use these exact friction coefficients (mu_s, mu_k) at\n"
+          "                   every fixel instead of drawing them\n"
+          "  --format=FMT     text (default; the .wc file)\n"
           "  -h, --help       print this help and exit\n"
           "  -V, --version    print versions and exit\n", out);
 }
@@ -562,6 +587,162 @@ cleanup:
     return status;
 }
 
+/* 1 when s is a decimal integer (digits only) no larger than max.  */
+static int
+parse_uint(uint64_t * v, const char * s, uint64_t max)
+{
+    uint64_t x = 0;
+
+    if (*s == '\0')
+        return 0;
+    for (; *s != '\0'; s++)
+    {
+        if (*s < '0' || *s > '9' || x > (max - (uint64_t) (*s - '0')) / 10)
+            return 0;
+        x = 10 * x + (uint64_t) (*s - '0');
+    }
+    *v = x;
+    return 1;
+}
+
+/* MU or MU,MUK: exact non-negative numbers.  */
+static int
+parse_friction_arg(wc_random_options * ro, const char * s)
+{
+    const char * comma = strchr(s, ',');
+    size_t len = comma != NULL ? (size_t) (comma - s) : strlen(s);
+    wc_error_t err;
+    int ok;
+
+    wc_error_init(err);
+    ok = wc_parse_number(ro->mu_s, s, len, err) == WC_OK
+        && fmpq_sgn(ro->mu_s) >= 0;
+    if (ok && comma != NULL)
+        ok = wc_parse_number(ro->mu_k, comma + 1, strlen(comma + 1), err)
+            == WC_OK && fmpq_sgn(ro->mu_k) >= 0;
+    else if (ok)
+        fmpq_set(ro->mu_k, ro->mu_s);
+    wc_error_clear(err);
+    ro->friction = 1;
+    return ok;
+}
+
+static int
+cmd_random(int argc, char ** argv)
+{
+    enum { R_FIXELS = 256, R_SEED, R_DEGENERATE, R_SHAPE, R_FRICTION,
+           R_FORMAT };
+    static const struct option opts[] = {
+        { "fixels", required_argument, NULL, R_FIXELS },
+        { "seed", required_argument, NULL, R_SEED },
+        { "degenerate", no_argument, NULL, R_DEGENERATE },
+        { "shape", required_argument, NULL, R_SHAPE },
+        { "friction", required_argument, NULL, R_FRICTION },
+        { "format", required_argument, NULL, R_FORMAT },
+        { "help", no_argument, NULL, 'h' },
+        { "version", no_argument, NULL, 'V' },
+        { NULL, 0, NULL, 0 }
+    };
+    wc_random_options ro;
+    wc_problem_t P;
+    wc_error_t err;
+    char * line = NULL;
+    uint64_t v;
+    int c, status = -1;
+
+    wc_random_options_init(&ro);
+    opterr = 0;
+    optind = 1;
+    while (status < 0 && (c = getopt_long(argc, argv, "hV", opts, NULL)) != -1)
+    {
+        switch (c)
+        {
+        case R_FIXELS:
+            if (!parse_uint(&v, optarg, WC_RANDOM_MAX_FIXELS) || v < 1)
+                status = usage_error("random", "--fixels must be an integer "
+                                     "from 1 to 1000, not '%s'", optarg);
+            else
+                ro.fixels = (slong) v;
+            break;
+        case R_SEED:
+            if (!parse_uint(&v, optarg, UINT64_MAX))
+                status = usage_error("random", "--seed must be a decimal "
+                                     "integer from 0 to 2^64 - 1, not '%s'",
+                                     optarg);
+            else
+                ro.seed = v;
+            break;
+        case R_DEGENERATE:
+            ro.degenerate = 1;
+            break;
+        case R_SHAPE:
+            if (strcmp(optarg, "none") == 0)
+                ro.shape = WC_SHAPE_NONE;
+            else if (strcmp(optarg, "disk") == 0)
+                ro.shape = WC_SHAPE_DISK;
+            else if (strcmp(optarg, "polygon") == 0)
+                ro.shape = WC_SHAPE_POLYGON;
+            else
+                status = usage_error("random", "unknown shape '%s' (none, disk "
+                                     "or polygon)", optarg);
+            break;
+        case R_FRICTION:
+            if (!parse_friction_arg(&ro, optarg))
+                status = usage_error("random", "--friction must be MU or MU,MUK, "
+                                     "exact non-negative numbers such as 1/5 "
+                                     "or 0.2, not '%s'", optarg);
+            break;
+        case R_FORMAT:
+            if (strcmp(optarg, "text") != 0)
+                status = usage_error("random", "unknown format '%s' (random "
+                                     "prints a .wc file: text only)", optarg);
+            break;
+        case 'h':
+            usage_random(stdout);
+            status = finish_output();
+            break;
+        case 'V':
+            version();
+            status = finish_output();
+            break;
+        default:
+            status = usage_error("random", "unknown or incomplete option '%s'",
+                                 argv[optind - 1]);
+            break;
+        }
+    }
+    if (status < 0 && optind < argc)
+        status = usage_error("random", "random takes no operands, not '%s'",
+                             argv[optind]);
+    if (status >= 0)
+    {
+        wc_random_options_clear(&ro);
+        return status;
+    }
+
+    wc_problem_init(P);
+    wc_error_init(err);
+    status = wc_random_problem(P, &ro, err);
+    if (status == WC_OK && (line = wc_random_options_str(&ro)) == NULL)
+        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
+    if (status != WC_OK)
+        report(err, status);
+    else
+    {
+        printf("# " PROG " random %s\n", line);
+        status = wc_problem_fprint(stdout, P);
+        if (status == WC_OK)
+            status = finish_output();
+        else
+            fprintf(stderr, PROG ": write error: %s\n", strerror(errno));
+    }
+    free(line);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    wc_random_options_clear(&ro);
+    return status;
+}
+
 static const char * const planned[] = {
     "classify", "stability", "plan", "sweep", "draw", "compare", NULL
 };
@@ -594,6 +775,8 @@ main(int argc, char ** argv)
         status = cmd_feasible(argc - 1, argv + 1);
     else if (strcmp(argv[1], "verify") == 0)
         status = cmd_verify(argc - 1, argv + 1);
+    else if (strcmp(argv[1], "random") == 0)
+        status = cmd_random(argc - 1, argv + 1);
     else
     {
         for (i = 0; planned[i] != NULL; i++)
