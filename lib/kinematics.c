@@ -16,8 +16,9 @@
    vector, the mode letters and a count of penetrated fixels up to date
    one form at a time (crossing a ray changes only the forms of the planes
    through it), so a penetrating face costs O(1) and only the others pay
-   O(n) for the exact lookup of their mode: O(n^2 + n F) in all, F the
-   number of non-penetrating faces.  */
+   O(n) for the exact lookup of their mode: O(n^2 log n + n F) in all
+   (the log from sorting each plane's rays), F the number of
+   non-penetrating faces.  */
 
 #include <config.h>
 
@@ -512,6 +513,7 @@ static void
 enumerate(wc_modes_t M, const wc_problem_t P)
 {
     slong n = P->n, K = 2 * n, np, nl, i, j, k, p, q, c, z;
+    int side;
     fmpz_mat_t a;
     fmpz * v = _fmpz_vec_init(3), * u = _fmpz_vec_init(3),
         * w = _fmpz_vec_init(3), * mid = _fmpz_vec_init(3),
@@ -645,13 +647,13 @@ enumerate(wc_modes_t M, const wc_problem_t P)
             if (is_new(&W))
                 mode_set_add(&S, W.cur, mid);
             /* The chambers: the plane's own forms leave zero.  */
-            for (z = -1; z <= 1; z += 2)
+            for (side = -1; side <= 1; side += 2)
             {
                 for (j = 0; j < cols[p].len; j++)
-                    set_sign(&W, cols[p].x[j], z * sgnf[cols[p].x[j]]);
+                    set_sign(&W, cols[p].x[j], side * sgnf[cols[p].x[j]]);
                 if (is_new(&W))
                 {
-                    chamber_witness(wit, &W, mid, h, z);
+                    chamber_witness(wit, &W, mid, h, side);
                     mode_set_add(&S, W.cur, wit);
                 }
             }
@@ -664,8 +666,12 @@ enumerate(wc_modes_t M, const wc_problem_t P)
             z = ang[i + 1].ray;
             _fmpz_vec_scalar_mul_si(v, ROW(lines.v, z / 2), 3, (z & 1) ? -1 : 1);
             for (j = 0; j < planes_on[z / 2].len; j++)
-                for (q = planes_on[z / 2].x[j], k = 0; q != p && k < cols[q].len; k++)
+            {
+                if ((q = planes_on[z / 2].x[j]) == p)
+                    continue;
+                for (k = 0; k < cols[q].len; k++)
                     set_sign(&W, cols[q].x[k], 0);
+            }
             if (!done[z])
             {
                 done[z] = 1;
@@ -682,11 +688,15 @@ enumerate(wc_modes_t M, const wc_problem_t P)
                                            (q & 1) ? -1 : 1);
             }
             for (j = 0; j < planes_on[z / 2].len; j++)
-                for (q = planes_on[z / 2].x[j], k = 0; q != p && k < cols[q].len; k++)
+            {
+                if ((q = planes_on[z / 2].x[j]) == p)
+                    continue;
+                for (k = 0; k < cols[q].len; k++)
                 {
                     _fmpz_vec_dot(W.t, ROW(a, cols[q].x[k]), next, 3);
                     set_sign(&W, cols[q].x[k], fmpz_sgn(W.t));
                 }
+            }
         }
         /* Ray 0 of this plane, met only as a start: record it too.  */
         z = ang[0].ray;

@@ -60,8 +60,8 @@ void wc_modes_clear(wc_modes_t M);
    the 2n planes J_k . nu = 0 in R^3 (O(n^2) faces: the origin, the rays
    where planes meet, the arcs between them, the chambers), mapping each
    non-penetrating face to its mode.  Never looks at the 4^n strings; time
-   O(n^2 + n F), F the number of non-penetrating faces (at most O(n^2),
-   and few when many fixels touch).  M may hold an earlier result (it is
+   O(n^2 log n + n F), F the number of non-penetrating faces (at most
+   O(n^2), and few when many fixels touch).  M may hold an earlier result (it is
    replaced).  Returns WC_OK (M filled) or
    WC_EINPUT when wc_problem_check fails.  */
 int wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err);
@@ -95,10 +95,12 @@ void wc_certificate_clear(wc_certificate_t C);
 int wc_feasible(wc_certificate_t C, const wc_problem_t P, const char * mode,
                 wc_error_t err);
 
-/* 1 when C holds (checked with exact integer arithmetic), else 0: when
-   feasible, the witness satisfies every row (it need not be primitive);
-   when not, the multipliers satisfy the three Motzkin conditions (the
-   witness is ignored).  */
+/* 1 when C is internally consistent (exact integer arithmetic), else 0:
+   when feasible, the witness satisfies every row (it need not be
+   primitive); when not, the multipliers satisfy the three Motzkin
+   conditions (the witness is ignored).  It does not check that the rows
+   are the ones the mode implies for a problem -- wc_feasible builds them
+   so, and wc_verify_certificate re-derives them.  */
 int wc_certificate_check(const wc_certificate_t C);
 
 #ifdef __cplusplus

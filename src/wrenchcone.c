@@ -16,6 +16,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "wrenchcone.h"
 
@@ -177,9 +178,17 @@ usage_error(const char * cmd, const char * fmt, const char * arg)
     return WC_EUSAGE;
 }
 
-/* Read the whole of path ("-": stdin) into a malloc'd buffer.  */
+/* Inputs larger than these are refused before they are parsed: a problem
+   of a million fixels is far below the first, and a certificate carries
+   at most two rows per fixel.  */
+#define MAX_PROBLEM_BYTES ((size_t) 256 << 20)
+#define MAX_CERTIFICATE_BYTES ((size_t) 64 << 20)
+
+/* Read the whole of path ("-": stdin), at most max bytes, into a malloc'd
+   buffer.  */
 static int
-read_all(char ** text, size_t * len, const char * path, wc_error_t err)
+read_all(char ** text, size_t * len, const char * path, size_t max,
+         wc_error_t err)
 {
     FILE * f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
     size_t alloc = 4096, n = 0, r;
@@ -193,6 +202,13 @@ read_all(char ** text, size_t * len, const char * path, wc_error_t err)
     while (buf != NULL && (r = fread(buf + n, 1, alloc - n, f)) > 0)
     {
         n += r;
+        if (n > max)
+        {
+            status = wc_error_set(err, WC_EINPUT, path, 0, 0,
+                                  "file too large (over %lu bytes)",
+                                  (unsigned long) max);
+            break;
+        }
         if (n == alloc)
         {
             char * p = realloc(buf, alloc *= 2);
@@ -202,11 +218,15 @@ read_all(char ** text, size_t * len, const char * path, wc_error_t err)
             buf = p;
         }
     }
-    if (buf == NULL)
+    if (status != WC_OK)
+        ;
+    else if (buf == NULL)
         status = wc_error_set(err, WC_EINTERNAL, path, 0, 0, "out of memory");
     else if (ferror(f))
-        status = wc_error_set(err, WC_EINPUT, path, 0, 0, "read error: %s",
-                              strerror(errno));
+        /* A directory is a wrong argument; anything else is an I/O
+           failure.  */
+        status = wc_error_set(err, errno == EISDIR ? WC_EINPUT : WC_EINTERNAL,
+                              path, 0, 0, "read error: %s", strerror(errno));
     if (f != stdin)
         fclose(f);
     if (status != WC_OK)
@@ -224,7 +244,7 @@ load_problem(wc_problem_t P, const char * path, wc_error_t err)
 {
     char * text = NULL;
     size_t len = 0;
-    int status = read_all(&text, &len, path, err);
+    int status = read_all(&text, &len, path, MAX_PROBLEM_BYTES, err);
 
     if (status == WC_OK)
         status = wc_problem_parse(P, text, len,
@@ -297,7 +317,7 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
         { "version", no_argument, NULL, 'V' },
         { NULL, 0, NULL, 0 }
     };
-    int c;
+    int c, idx = 0;
 
     o->fmt = FMT_TEXT;
     o->method = WC_METHOD_DIRECT;
@@ -306,14 +326,14 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
     o->certificate = NULL;
     opterr = 0;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "hV", opts, NULL)) != -1)
+    while ((c = getopt_long(argc, argv, "hV", opts, &idx)) != -1)
     {
         if ((c == OPT_METHOD && !(takes & TAKES_METHOD))
             || (c == OPT_TRACE && !(takes & TAKES_TRACE))
             || (c == OPT_WITNESS && !(takes & TAKES_WITNESS))
             || (c == OPT_CERT && !(takes & TAKES_CERT)))
-            return usage_error(cmd, "option '%s' does not apply here",
-                               argv[optind - 1]);
+            return usage_error(cmd, "option '--%s' does not apply here",
+                               opts[idx].name);
         switch (c)
         {
         case OPT_FORMAT:
@@ -507,10 +527,21 @@ cmd_feasible(int argc, char ** argv)
     }
     if (o.certificate != NULL)
     {
+        struct stat st;
+        int existed = stat(o.certificate, &st) == 0;
         FILE * f = fopen(o.certificate, "w");
+        int bad = f == NULL;
 
-        if (f == NULL || wc_certificate_fprint(f, C, P, 1) != WC_OK
-            || fclose(f) != 0)
+        if (f != NULL)
+        {
+            bad = wc_certificate_fprint(f, C, P, 1) != WC_OK;
+            bad |= fclose(f) != 0;
+            /* No partial certificate -- but remove only a file this run
+               created, never a device or someone's file.  */
+            if (bad && !existed)
+                remove(o.certificate);
+        }
+        if (bad)
         {
             fprintf(stderr, PROG ": %s: cannot write the certificate: %s\n",
                     o.certificate, strerror(errno));
@@ -547,7 +578,7 @@ cmd_verify(int argc, char ** argv)
                            : "verify takes CERTFILE only%s", "");
     path = argv[optind];
     wc_error_init(err);
-    status = read_all(&text, &len, path, err);
+    status = read_all(&text, &len, path, MAX_CERTIFICATE_BYTES, err);
     if (status == WC_OK)
         status = wc_verify_certificate(&holds, &reason, &mode, &feasible,
                                        text, len,

@@ -305,6 +305,20 @@ else
     expect printed-json 0 "certificate holds: mode ln is infeasible" ""
 fi
 
+# A certificate that cannot be written is an I/O failure (exit 3), and a
+# file that was there before -- here a device -- is never removed.
+if [ -c /dev/full ] && [ -w /dev/full ]; then
+    "$WRENCHCONE" feasible --certificate=/dev/full \
+        "$top_srcdir/data/disk-two-fixels.wc" ln > /dev/null 2>&1
+    st=$?
+    [ "$st" -eq 3 ] || fail "certificate to /dev/full: exit $st, want 3"
+    [ -c /dev/full ] || fail "certificate to /dev/full removed the device"
+fi
+"$WRENCHCONE" feasible --certificate=/nonexistent-dir/c.json \
+    "$top_srcdir/data/disk-two-fixels.wc" ln > /dev/null 2>&1
+st=$?
+[ "$st" -eq 3 ] || fail "certificate into a missing directory: exit $st, want 3"
+
 if [ "$failures" -ne 0 ]; then
     printf '%s: %d failure(s)\n' "$0" "$failures"
     exit 1
