@@ -1,4 +1,5 @@
-/* cddbridge.h -- the only door to cddlib (GMP build).  Private.
+/* cddbridge.h -- the only door to cddlib (GMP build; its double build
+   for floatcone.c).  Private.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -13,6 +14,7 @@
 #define WC_CDDBRIDGE_H
 
 #include <flint/fmpq_mat.h>
+#include <flint/d_mat.h>
 
 #include "error.h"
 #include "cone.h"
@@ -34,6 +36,22 @@ int _wc_cdd_v_to_h(fmpq_mat_t E, fmpq_mat_t H, slong d,
    -1 (err set, WC_EINTERNAL) when cddlib fails.  A must have a row.  */
 int _wc_cdd_lp_point(fmpq * x, const fmpq_mat_t A, const fmpq * b,
                      const int * eq, wc_error_t err);
+
+/* The same conversions in cddlib's double-precision build (the ddf_
+   functions of libcddgmp), for floatcone.c only: rows of d_mat's, which
+   the callee re-initialises (the caller inits and clears them, also on
+   failure).  Rows that are zero, and the apex or trivial row cddlib adds,
+   are dropped.  Nothing exact may depend on these.  */
+int _wc_cddf_h_to_v(d_mat_t rays, d_mat_t lines, slong d, const d_mat_t E,
+                    const d_mat_t H, wc_error_t err);
+int _wc_cddf_v_to_h(d_mat_t E, d_mat_t H, slong d, const d_mat_t rays,
+                    const d_mat_t lines, wc_error_t err);
+
+/* Whether { x : H0 x <= 0, H1 x <= -1 } (rows of d entries; either may be
+   NULL) has a point, by cddlib's double LP (dual simplex): 1 yes, 0 no,
+   -1 when cddlib fails (err set, WC_EINTERNAL).  */
+int _wc_cddf_lp_feasible(const d_mat_t H0, const d_mat_t H1, slong d,
+                         wc_error_t err);
 
 /* wc_cone_set_hrep and wc_cone_set_generators with the conversion done
    by cddlib even in dimension 3 (where hull3.c is the default): the paper

@@ -22,6 +22,7 @@
 #include "verify.h"
 #include "random.h"
 #include "print.h"
+#include "floatcone.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -66,6 +66,10 @@ usage_cone(FILE * out)
           "  --method=METHOD  direct (default; Minkowski sum in R^3) or paper (the\n"
           "                   paper's Section 5 route); both print the same bytes\n"
           "  --trace          also print every intermediate matrix of the route\n"
+          "  --arith=ARITH    exact (default) or double: the paper route in C doubles\n"
+          "                   with cddlib's double-precision build, the floating-point\n"
+          "                   baseline (needs --method=paper, no --trace; unit-length\n"
+          "                   vectors, a strict flag per facet and ray instead of faces)\n"
           "  -h, --help       print this help and exit\n"
           "  -V, --version    print versions and exit\n", out);
 }
@@ -284,11 +288,12 @@ finish_output(void)
     return WC_OK;
 }
 
-enum { OPT_FORMAT = 256, OPT_METHOD, OPT_TRACE, OPT_WITNESS, OPT_CERT };
+enum { OPT_FORMAT = 256, OPT_METHOD, OPT_TRACE, OPT_WITNESS, OPT_CERT,
+       OPT_ARITH };
 
 /* Which options a command takes, beyond --format, --help, --version.  */
 enum { TAKES_CDD = 1, TAKES_METHOD = 2, TAKES_TRACE = 4, TAKES_WITNESS = 8,
-       TAKES_CERT = 16 };
+       TAKES_CERT = 16, TAKES_ARITH = 32 };
 
 typedef struct
 {
@@ -297,6 +302,7 @@ typedef struct
     int trace;
     int witness;
     const char * certificate;
+    int arith_double;   /* --arith=double */
 }
 options;
 
@@ -313,6 +319,7 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
         { "trace", no_argument, NULL, OPT_TRACE },
         { "witness", no_argument, NULL, OPT_WITNESS },
         { "certificate", required_argument, NULL, OPT_CERT },
+        { "arith", required_argument, NULL, OPT_ARITH },
         { "help", no_argument, NULL, 'h' },
         { "version", no_argument, NULL, 'V' },
         { NULL, 0, NULL, 0 }
@@ -324,6 +331,7 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
     o->trace = 0;
     o->witness = 0;
     o->certificate = NULL;
+    o->arith_double = 0;
     opterr = 0;
     optind = 1;
     while ((c = getopt_long(argc, argv, "hV", opts, &idx)) != -1)
@@ -331,7 +339,8 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
         if ((c == OPT_METHOD && !(takes & TAKES_METHOD))
             || (c == OPT_TRACE && !(takes & TAKES_TRACE))
             || (c == OPT_WITNESS && !(takes & TAKES_WITNESS))
-            || (c == OPT_CERT && !(takes & TAKES_CERT)))
+            || (c == OPT_CERT && !(takes & TAKES_CERT))
+            || (c == OPT_ARITH && !(takes & TAKES_ARITH)))
             return usage_error(cmd, "option '--%s' does not apply here",
                                opts[idx].name);
         switch (c)
@@ -360,6 +369,13 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
         case OPT_CERT:
             o->certificate = optarg;
             break;
+        case OPT_ARITH:
+            if (strcmp(optarg, "exact") == 0 || strcmp(optarg, "double") == 0)
+                o->arith_double = optarg[0] == 'd';
+            else
+                return usage_error(cmd, "unknown arithmetic '%s' (exact or double)",
+                                   optarg);
+            break;
         case 'h':
             help(stdout);
             return finish_output();
@@ -374,6 +390,55 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
     return -1;
 }
 
+/* cone --method=paper --arith=double: the float baseline, printed by
+   floatcone.c.  */
+static int
+cone_double(const options * o, const char * path, const char * mode)
+{
+    wc_problem_t P;
+    wc_error_t err;
+    wc_fcone_t W;
+    int status;
+
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_fcone_init(W, 3);
+    status = load_problem(P, path, err);
+    if (status == WC_OK)
+        status = wc_wrench_cone_paper_double(W, P, mode, WC_FCONE_EPS, err);
+    if (status != WC_OK)
+    {
+        report(err, status);
+        goto cleanup;
+    }
+    switch (o->fmt)
+    {
+    case FMT_TEXT:
+        printf("W(%s): wrench cone of mode %s\n", mode, mode);
+        wc_fcone_fprint(stdout, W, WC_FCONE_TEXT);
+        break;
+    case FMT_JSON:
+        fputs("{\"mode\": ", stdout);
+        wc_fprint_json_string(stdout, mode);
+        fputs(", \"cone\": ", stdout);
+        wc_fcone_fprint(stdout, W, WC_FCONE_JSON);
+        fputs("}\n", stdout);
+        break;
+    default:
+        printf("* wrenchcone: W(%s), the wrench cone of mode %s\n", mode, mode);
+        wc_fcone_fprint(stdout, W, o->fmt == FMT_INE ? WC_FCONE_INE
+                        : o->fmt == FMT_EXT ? WC_FCONE_EXT : WC_FCONE_CDD);
+        break;
+    }
+    status = finish_output();
+
+cleanup:
+    wc_fcone_clear(W);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}
+
 static int
 cmd_cone(int argc, char ** argv)
 {
@@ -386,15 +451,21 @@ cmd_cone(int argc, char ** argv)
     wc_trace_t T;
 
     if ((status = parse_options(&o, argc, argv, "cone",
-                                TAKES_CDD | TAKES_METHOD | TAKES_TRACE,
-                                usage_cone)) >= 0)
+                                TAKES_CDD | TAKES_METHOD | TAKES_TRACE
+                                | TAKES_ARITH, usage_cone)) >= 0)
         return status;
+    if (o.arith_double && o.method != WC_METHOD_PAPER)
+        return usage_error("cone", "--arith=double needs --method=paper%s", "");
+    if (o.arith_double && o.trace)
+        return usage_error("cone", "--arith=double does not take --trace%s", "");
     if (argc - optind != 2)
         return usage_error("cone", argc - optind < 2
                            ? "cone needs PROBLEM and MODE%s"
                            : "cone takes PROBLEM and MODE only%s", "");
     path = argv[optind];
     mode = argv[optind + 1];
+    if (o.arith_double)
+        return cone_double(&o, path, mode);
 
     wc_problem_init(P);
     wc_error_init(err);

@@ -1,0 +1,134 @@
+#!/bin/sh
+# cli-double.sh -- wrenchcone cone --method=paper --arith=double: usage
+# errors (exit 2, exact stderr), and the float output of the Section 4
+# example in every format (keys, flags and headers; the digits are
+# checked by tests/t-double.c, to 1e-12).
+#
+# Copyright (C) 2026 the wrenchcone authors.
+# This file is part of wrenchcone, free software under the GNU General
+# Public License, version 2 or (at your option) any later version.
+#
+# Run by make check with WRENCHCONE and top_srcdir in the environment.
+# Silent on success; prints each failing case and exits 1.
+
+: "${WRENCHCONE:?WRENCHCONE is not set}"
+: "${top_srcdir:?top_srcdir is not set}"
+
+s4="$top_srcdir/data/section4.wc"
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/cli-double.XXXXXX") || exit 99
+trap 'rm -rf "$tmp"' 0
+trap 'exit 1' HUP INT TERM
+failures=0
+
+fail() {
+    printf 'FAIL: %s: %s\n' "$1" "$2"
+    failures=$((failures + 1))
+}
+
+# run ARGS...: sets $status, leaves stdout and stderr in $tmp/out, $tmp/err.
+run() {
+    "$WRENCHCONE" "$@" </dev/null >"$tmp/out" 2>"$tmp/err"
+    status=$?
+}
+
+# usage NAME FIRST-LINE ARGS...: exit 2, nothing on stdout, and stderr the
+# given line then the usual hint.
+usage() {
+    name=$1
+    line=$2
+    shift 2
+    run "$@"
+    printf '%s\n%s\n' "$line" \
+        "Try 'wrenchcone cone --help' for more information." >"$tmp/want"
+    [ "$status" -eq 2 ] || fail "$name" "exit status $status, expected 2"
+    [ -s "$tmp/out" ] && fail "$name" "stdout is not empty"
+    cmp -s "$tmp/want" "$tmp/err" || {
+        fail "$name" "stderr differs:"
+        sed 's/^/    /' "$tmp/err"
+    }
+}
+
+# has NAME TEXT: stdout of the last run contains the line TEXT.
+has() {
+    grep -qxF -- "$2" "$tmp/out" || {
+        fail "$1" "no line '$2' in:"
+        sed 's/^/    /' "$tmp/out"
+    }
+}
+
+# contains NAME TEXT: stdout of the last run contains TEXT.
+contains() {
+    grep -qF -- "$2" "$tmp/out" || {
+        fail "$1" "no '$2' in:"
+        sed 's/^/    /' "$tmp/out"
+    }
+}
+
+usage direct "wrenchcone: --arith=double needs --method=paper" \
+    cone --arith=double "$s4" na
+usage direct2 "wrenchcone: --arith=double needs --method=paper" \
+    cone --arith=double --method=direct "$s4" na
+usage trace "wrenchcone: --arith=double does not take --trace" \
+    cone --method=paper --arith=double --trace "$s4" na
+usage unknown "wrenchcone: unknown arithmetic 'float' (exact or double)" \
+    cone --method=paper --arith=float "$s4" na
+run modes --arith=double "$s4"
+[ "$status" -eq 2 ] || fail modes "exit status $status, expected 2"
+
+# --arith=exact is the exact route, byte for byte.
+run cone --method=paper "$s4" na
+mv "$tmp/out" "$tmp/exact"
+run cone --method=paper --arith=exact "$s4" na
+cmp -s "$tmp/exact" "$tmp/out" || fail exact "--arith=exact changed the output"
+
+run cone --method=paper --arith=double "$s4" na
+[ "$status" -eq 0 ] && [ ! -s "$tmp/err" ] || fail text "status $status"
+has text "W(na): wrench cone of mode na"
+contains text "floating point, not exact"
+has text "  dimension 3, lineality 0, not closed (1 of 3 facets strict)"
+[ "$(grep -c 'strict (excluded)$' "$tmp/out")" -eq 1 ] \
+    || fail text "not exactly one strict facet"
+[ "$(grep -c '  excluded$' "$tmp/out")" -eq 2 ] \
+    || fail text "not exactly two excluded rays"
+
+run cone --method=paper --arith=double --format=json "$s4" na
+[ "$status" -eq 0 ] || fail json "status $status"
+contains json '{"mode": "na", "cone": {"empty": false, "arith": "double", "eps": '
+contains json '"dim": 3, "lineality_dim": 0, "closed": false, "inequalities": [['
+contains json '"strict": [true, false, false], "equalities": [], "rays": [['
+contains json '"strict_rays": [true, true, false], "lines": []}}'
+[ "$(wc -l <"$tmp/out")" -eq 1 ] || fail json "not one line"
+
+run cone --method=paper --arith=double --format=cdd "$s4" na
+[ "$status" -eq 0 ] || fail cdd "status $status"
+has cdd "* wrenchcone: W(na), the wrench cone of mode na"
+has cdd "*   strict facet, H row 1"
+has cdd " 3 4 real"
+has cdd " 4 4 real"
+has cdd " 1 0 0 0"
+[ "$(grep -c '^[HV]-representation$' "$tmp/out")" -eq 2 ] \
+    || fail cdd "not both representations"
+
+run cone --method=paper --arith=double --format=ine "$s4" na
+[ "$(grep -c '^V-representation$' "$tmp/out")" -eq 0 ] || fail ine "has a V part"
+run cone --method=paper --arith=double --format=ext "$s4" na
+[ "$(grep -c '^H-representation$' "$tmp/out")" -eq 0 ] || fail ext "has an H part"
+
+# An empty cone and an all-free mode.
+printf 'fixel 0 0 normal 0 1 near\nfixel 0 1 normal 0 -1 near\n' >"$tmp/p.wc"
+run cone --method=paper --arith=double --format=json "$tmp/p.wc" uu
+contains free '"dim": 3, "lineality_dim": 3, "closed": true, "inequalities": [], "strict": []'
+printf 'fixel 0 0 normal 0 1 near\nfixel 0 2 normal 0 -1 near\n' >"$tmp/q.wc"
+run cone --method=paper --format=json "$tmp/q.wc" aa
+grep -qF '{"empty": true}' "$tmp/out" || fail empty "the exact cone of aa is not empty"
+run cone --method=paper --arith=double --format=json "$tmp/q.wc" aa
+has empty '{"mode": "aa", "cone": {"empty": true, "arith": "double", "eps": 1.0000000000000001e-09}}'
+
+# Bad input is exit 1 with the exact route's diagnostic.
+run cone --method=paper --arith=double "$s4" nx
+[ "$status" -eq 1 ] || fail badmode "exit status $status, expected 1"
+grep -qxF "wrenchcone: <mode>:1:2: unknown mode letter 'x'" "$tmp/err" \
+    || fail badmode "stderr: $(cat "$tmp/err")"
+
+[ "$failures" -eq 0 ] || exit 1
+exit 0
