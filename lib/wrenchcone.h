@@ -23,6 +23,7 @@
 #include "random.h"
 #include "print.h"
 #include "floatcone.h"
+#include "compare.h"
 
 #ifdef __cplusplus
 extern "C" {

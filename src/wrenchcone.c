@@ -36,6 +36,9 @@ usage(FILE * out)
           "  modes PROBLEM          every kinematically feasible contact mode\n"
           "  feasible PROBLEM MODE  one mode's verdict, with a checkable certificate\n"
           "  verify CERTFILE        re-check a certificate with GMP arithmetic alone\n"
+          "  compare PROBLEM MODE FILE\n"
+          "                         check a cone computed elsewhere (FILE: cdd or JSON,\n"
+          "                         floats allowed) against the exact W(MODE)\n"
           "  random [OPTIONS]       print a reproducible random problem (a .wc file)\n"
           "\n"
           "PROBLEM is a .wc problem file (see wrenchcone(5)); '-' reads standard input.\n"
@@ -144,6 +147,34 @@ usage_random(FILE * out)
           "                   use these exact friction coefficients (mu_s, mu_k) at\n"
           "                   every fixel instead of drawing them\n"
           "  --format=FMT     text (default; the .wc file)\n"
+          "  -h, --help       print this help and exit\n"
+          "  -V, --version    print versions and exit\n", out);
+}
+
+static void
+usage_compare(FILE * out)
+{
+    fputs("Usage: " PROG " compare [OPTIONS] PROBLEM MODE FILE\n"
+          "Check a cone computed elsewhere, typically in floating point, against the\n"
+          "exact W(MODE).  FILE is a cddlib .ext (generators) or .ine (inequalities)\n"
+          "with integers, fractions, decimals or exponents, or a JSON cone as\n"
+          "'" PROG " cone --format=json' prints it (exact, or with floats).\n"
+          "FILE's numbers are read exactly, and the exact side decides emptiness,\n"
+          "dimension, lineality, extreme rays and facets; floating point enters only\n"
+          "the angles reported (radians): each float ray's angle to the exact closure,\n"
+          "each exact ray's angle to the float closure, and the Hausdorff distance\n"
+          "between the two closures on the unit sphere.  An extreme ray or facet with\n"
+          "none of the other side's within the tolerance is missing (exact) or extra\n"
+          "(float).  Strictness cannot be read from a float cone: the report lists\n"
+          "the faces the exact cone excludes, to be checked separately.\n"
+          "\n"
+          "Exit status 0 when FILE is within the tolerance (same emptiness, dimension\n"
+          "and lineality, Hausdorff distance <= T, nothing missing or extra), 4 when\n"
+          "it is not, 1 when PROBLEM, MODE or FILE is malformed.\n"
+          "\n"
+          "Options:\n"
+          "  --tol=T          tolerance in radians, 0 <= T < pi/2 (default 1e-9)\n"
+          "  --format=FMT     text (default) or json\n"
           "  -h, --help       print this help and exit\n"
           "  -V, --version    print versions and exit\n", out);
 }
@@ -845,8 +876,113 @@ cmd_random(int argc, char ** argv)
     return status;
 }
 
+static int
+cmd_compare(int argc, char ** argv)
+{
+    enum { C_TOL = 256, C_FORMAT };
+    static const struct option opts[] = {
+        { "tol", required_argument, NULL, C_TOL },
+        { "format", required_argument, NULL, C_FORMAT },
+        { "help", no_argument, NULL, 'h' },
+        { "version", no_argument, NULL, 'V' },
+        { NULL, 0, NULL, 0 }
+    };
+    double tol = WC_COMPARE_TOL;
+    int json = 0, c, status = -1;
+    const char * ppath, * mode, * fpath, * pname, * fname;
+    char * text = NULL, * end;
+    size_t len = 0;
+    wc_problem_t P;
+    wc_error_t err;
+    wc_cone_t W;
+    wc_foreign_t F;
+    wc_comparison_t R;
+
+    opterr = 0;
+    optind = 1;
+    while (status < 0 && (c = getopt_long(argc, argv, "hV", opts, NULL)) != -1)
+    {
+        switch (c)
+        {
+        case C_TOL:
+            tol = strtod(optarg, &end);
+            if (end == optarg || *end != '\0' || !(tol >= 0 && tol < 1.5707963))
+                status = usage_error("compare", "--tol must be an angle in "
+                                     "radians, at least 0 and below pi/2 "
+                                     "(such as 1e-9), not '%s'", optarg);
+            break;
+        case C_FORMAT:
+            if (strcmp(optarg, "text") == 0 || strcmp(optarg, "json") == 0)
+                json = strcmp(optarg, "json") == 0;
+            else
+                status = usage_error("compare", "unknown format '%s' (text "
+                                     "or json)", optarg);
+            break;
+        case 'h':
+            usage_compare(stdout);
+            status = finish_output();
+            break;
+        case 'V':
+            version();
+            status = finish_output();
+            break;
+        default:
+            status = usage_error("compare", "unknown or incomplete option '%s'",
+                                 argv[optind - 1]);
+            break;
+        }
+    }
+    if (status >= 0)
+        return status;
+    if (argc - optind != 3)
+        return usage_error("compare", argc - optind < 3
+                           ? "compare needs PROBLEM, MODE and FILE%s"
+                           : "compare takes PROBLEM, MODE and FILE only%s", "");
+    ppath = argv[optind];
+    mode = argv[optind + 1];
+    fpath = argv[optind + 2];
+    if (strcmp(ppath, "-") == 0 && strcmp(fpath, "-") == 0)
+        return usage_error("compare", "PROBLEM and FILE cannot both be "
+                           "standard input%s", "");
+    pname = strcmp(ppath, "-") == 0 ? "<stdin>" : ppath;
+    fname = strcmp(fpath, "-") == 0 ? "<stdin>" : fpath;
+
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_cone_init(W, 3);
+    wc_foreign_init(F);
+    wc_comparison_init(R);
+    status = load_problem(P, ppath, err);
+    if (status == WC_OK)
+        status = wc_mode_check(P, mode, WC_TABLE_CONE, err);
+    if (status == WC_OK)
+        status = read_all(&text, &len, fpath, MAX_PROBLEM_BYTES, err);
+    if (status == WC_OK)
+        status = wc_foreign_parse(F, text, len, fname, err);
+    if (status == WC_OK)
+        status = wc_wrench_cone(W, NULL, P, mode, WC_METHOD_DIRECT, err);
+    if (status == WC_OK)
+        status = wc_compare(R, W, mode, F, tol, err);
+    if (status != WC_OK)
+        report(err, status);
+    else
+    {
+        wc_comparison_fprint(stdout, R, W, pname, mode, fname, json);
+        status = finish_output();
+        if (status == WC_OK && R->differs != 0)
+            status = WC_EDISAGREE;
+    }
+    free(text);
+    wc_comparison_clear(R);
+    wc_foreign_clear(F);
+    wc_cone_clear(W);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}
+
 static const char * const planned[] = {
-    "classify", "stability", "plan", "sweep", "draw", "compare", NULL
+    "classify", "stability", "plan", "sweep", "draw", NULL
 };
 
 int
@@ -879,6 +1015,8 @@ main(int argc, char ** argv)
         status = cmd_verify(argc - 1, argv + 1);
     else if (strcmp(argv[1], "random") == 0)
         status = cmd_random(argc - 1, argv + 1);
+    else if (strcmp(argv[1], "compare") == 0)
+        status = cmd_compare(argc - 1, argv + 1);
     else
     {
         for (i = 0; planned[i] != NULL; i++)
