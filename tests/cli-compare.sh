@@ -321,4 +321,20 @@ has help 'default 1e-9'
 "$W" --help >"$tmp/out" 2>&1
 has help-top '^  compare PROBLEM MODE FILE$'
 
+# The double route on well-conditioned problems, round trip: its .ext,
+# .ine and JSON each compare within the default tolerance (exit 0).
+for pm in section4.wc:na section4.wc:ns section4.wc:sa section4.wc:ma \
+          disk-two-fixels.wc:nn disk-two-fixels.wc:ss disk-two-fixels.wc:mm \
+          three-fixels.wc:aaa three-fixels.wc:saa; do
+    p=${pm%%:*}; m=${pm#*:}
+    for fmt in ext ine json; do
+        "$W" cone --method=paper --arith=double --format=$fmt \
+            "$top_srcdir/data/$p" "$m" > "$tmp/dbl.$fmt" 2>/dev/null \
+            || fail "double-$p-$m-$fmt" "cone exit $?"
+        "$W" compare "$top_srcdir/data/$p" "$m" "$tmp/dbl.$fmt" > "$tmp/out" 2>&1
+        st=$?
+        [ "$st" -eq 0 ] || fail "double-$p-$m-$fmt" "compare exit $st"
+    done
+done
+
 [ "$failures" -eq 0 ]
