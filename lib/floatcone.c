@@ -23,6 +23,7 @@
 #include "wrenchcone.h"
 #include "floatcone.h"
 #include "cddbridge.h"
+#include "table2.h"
 
 /* ---------------------------------------------------------------------
    Small helpers on double matrices (FLINT's d_mat) and their rows.  */
@@ -285,8 +286,6 @@ wc_fcone_set_empty(wc_fcone_t C)
 /* ---------------------------------------------------------------------
    The route.  */
 
-enum { Y_FREE = 1, Y_NEG = 2, Y_ZERO = 4, Y_STRICT = 8, Y_ROLL = 16,
-       Y_SLIDE = 32 };
 
 /* Column col of J for direction (dx, dy) at (rx, ry) = p - o.  */
 static void
@@ -412,30 +411,8 @@ wc_wrench_cone_paper_double(wc_fcone_t W, const wc_problem_t P,
             d_mat_entry(C, i, N2 + j) = -d_mat_entry(A, i, j);
     }
 
-    /* Table 2, per fixel, as flags on the entries of y (as paper.c).  */
-    for (i = 0; i < n; i++)
-    {
-        slong an = i, at = n + i, cn = 2 * n + i, ct = 3 * n + i;
-        int roll_ok = fmpq_get_d(P->fixels[i].mu_s) != 0.0;
-
-        switch (mode[i])
-        {
-        case 's': flag[at] = Y_FREE; flag[cn] = flag[ct] = Y_ZERO; break;
-        case 'a': flag[an] = Y_NEG | Y_STRICT; flag[at] = Y_FREE;
-                  flag[cn] = flag[ct] = Y_ZERO; break;
-        case 'u': flag[an] = flag[at] = Y_FREE;
-                  flag[cn] = flag[ct] = Y_ZERO; break;
-        case 'l': flag[an] = Y_ZERO; flag[at] = Y_STRICT;
-                  flag[ct] = Y_SLIDE; break;
-        case 'r': flag[an] = Y_ZERO; flag[at] = Y_NEG | Y_STRICT;
-                  flag[ct] = Y_SLIDE; break;
-        case 'n': flag[an] = flag[at] = Y_ZERO;
-                  flag[ct] = roll_ok ? Y_ROLL : Y_ZERO; break;
-        case 'm': flag[an] = Y_ZERO; flag[at] = Y_FREE;
-                  flag[ct] = roll_ok ? Y_ROLL : Y_ZERO; break;
-        default: break;
-        }
-    }
+    /* Table 2, read exactly as the exact route reads it.  */
+    _wc_table2_flags(flag, P, mode);
 
     /* E, N, R, S, V.  */
     for (k = 0, rc = 0; k < N2; k++)

@@ -24,9 +24,8 @@
 
 #include "wrenchcone.h"
 #include "cddbridge.h"
+#include "table2.h"
 
-enum { Y_FREE = 1, Y_NEG = 2, Y_ZERO = 4, Y_STRICT = 8, Y_ROLL = 16,
-       Y_SLIDE = 32 };
 
 static void
 y_label(char * buf, size_t len, slong k, slong n)
@@ -49,6 +48,36 @@ cat(char ** buf, size_t * len, const char * s)
     memcpy(p + *len, s, l + 1);
     *buf = p;
     *len += l;
+}
+
+void
+_wc_table2_flags(int * flag, const wc_problem_t P, const char * mode)
+{
+    slong n = P->n, i;
+
+    for (i = 0; i < n; i++)
+    {
+        slong an = i, at = n + i, cn = 2 * n + i, ct = 3 * n + i;
+        int roll_ok = !fmpq_is_zero(P->fixels[i].mu_s);
+
+        switch (mode[i])
+        {
+        case 's': flag[at] = Y_FREE; flag[cn] = flag[ct] = Y_ZERO; break;
+        case 'a': flag[an] = Y_NEG | Y_STRICT; flag[at] = Y_FREE;
+                  flag[cn] = flag[ct] = Y_ZERO; break;
+        case 'u': flag[an] = flag[at] = Y_FREE;
+                  flag[cn] = flag[ct] = Y_ZERO; break;
+        case 'l': flag[an] = Y_ZERO; flag[at] = Y_STRICT;
+                  flag[ct] = Y_SLIDE; break;
+        case 'r': flag[an] = Y_ZERO; flag[at] = Y_NEG | Y_STRICT;
+                  flag[ct] = Y_SLIDE; break;
+        case 'n': flag[an] = flag[at] = Y_ZERO;
+                  flag[ct] = roll_ok ? Y_ROLL : Y_ZERO; break;
+        case 'm': flag[an] = Y_ZERO; flag[at] = Y_FREE;
+                  flag[ct] = roll_ok ? Y_ROLL : Y_ZERO; break;
+        default: break;
+        }
+    }
 }
 
 int
@@ -89,30 +118,7 @@ wc_wrench_cone_paper(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
     wc_model_B(B, P);
     wc_model_C(C, P);
 
-    /* Table 2, per fixel, as flags on the entries of y.  */
-    for (i = 0; i < n; i++)
-    {
-        slong an = i, at = n + i, cn = 2 * n + i, ct = 3 * n + i;
-        int roll_ok = !fmpq_is_zero(P->fixels[i].mu_s);
-
-        switch (mode[i])
-        {
-        case 's': flag[at] = Y_FREE; flag[cn] = flag[ct] = Y_ZERO; break;
-        case 'a': flag[an] = Y_NEG | Y_STRICT; flag[at] = Y_FREE;
-                  flag[cn] = flag[ct] = Y_ZERO; break;
-        case 'u': flag[an] = flag[at] = Y_FREE;
-                  flag[cn] = flag[ct] = Y_ZERO; break;
-        case 'l': flag[an] = Y_ZERO; flag[at] = Y_STRICT;
-                  flag[ct] = Y_SLIDE; break;
-        case 'r': flag[an] = Y_ZERO; flag[at] = Y_NEG | Y_STRICT;
-                  flag[ct] = Y_SLIDE; break;
-        case 'n': flag[an] = flag[at] = Y_ZERO;
-                  flag[ct] = roll_ok ? Y_ROLL : Y_ZERO; break;
-        case 'm': flag[an] = Y_ZERO; flag[at] = Y_FREE;
-                  flag[ct] = roll_ok ? Y_ROLL : Y_ZERO; break;
-        default: break;
-        }
-    }
+    _wc_table2_flags(flag, P, mode);
 
     /* E: the rows of I_2n of constrained accelerations.  */
     for (k = 0, ne = 0; k < N2; k++)
