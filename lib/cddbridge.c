@@ -304,6 +304,72 @@ cleanup:
     return res;
 }
 
+int
+_wc_cdd_lp_min(fmpq * x, fmpq_t val, const fmpq_mat_t A, const fmpq * b,
+               const int * eq, const fmpq * c, wc_error_t err)
+{
+    slong m = fmpq_mat_nrows(A), nv = fmpq_mat_ncols(A), i, j;
+    dd_MatrixPtr M = NULL;
+    dd_LPPtr lp = NULL;
+    dd_ErrorType e = dd_NoError;
+    int res = -1;
+
+    wc_init();
+    M = dd_CreateMatrix(m, nv + 1);
+    if (M == NULL)
+    {
+        cdd_fail(err, "dd_CreateMatrix", e);
+        goto cleanup;
+    }
+    M->representation = dd_Inequality;
+    M->numbtype = dd_Rational;
+    M->objective = dd_LPmin;
+    for (i = 0; i < m; i++)
+    {
+        fmpq_get_mpq(M->matrix[i][0], b + i);
+        mpq_neg(M->matrix[i][0], M->matrix[i][0]);
+        for (j = 0; j < nv; j++)
+            fmpq_get_mpq(M->matrix[i][j + 1], fmpq_mat_entry(A, i, j));
+        if (eq[i])
+            set_addelem(M->linset, i + 1);
+    }
+    mpq_set_ui(M->rowvec[0], 0, 1);
+    for (j = 0; j < nv; j++)
+        fmpq_get_mpq(M->rowvec[j + 1], c + j);
+    lp = dd_Matrix2LP(M, &e);
+    if (lp == NULL || e != dd_NoError)
+    {
+        cdd_fail(err, "dd_Matrix2LP", e);
+        goto cleanup;
+    }
+    if (!dd_LPSolve(lp, dd_DualSimplex, &e) || e != dd_NoError)
+    {
+        cdd_fail(err, "dd_LPSolve", e);
+        goto cleanup;
+    }
+    if (lp->LPS == dd_Optimal)
+    {
+        for (j = 0; j < nv; j++)
+            fmpq_set_mpq(x + j, lp->sol[j + 1]);
+        fmpq_set_mpq(val, lp->optvalue);
+        res = 1;
+    }
+    else if (lp->LPS == dd_Inconsistent)
+        res = 0;
+    else if (lp->LPS == dd_DualInconsistent || lp->LPS == dd_StrucDualInconsistent)
+        res = 2;
+    else
+        wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                     "cddlib LP ended with status %d", (int) lp->LPS);
+
+cleanup:
+    if (lp != NULL)
+        dd_FreeLPData(lp);
+    if (M != NULL)
+        dd_FreeMatrix(M);
+    return res;
+}
+
 /* ---------------------------------------------------------------------
    cddlib's double-precision build (ddf_), for the float baseline.  */
 

@@ -37,6 +37,13 @@ int _wc_cdd_v_to_h(fmpq_mat_t E, fmpq_mat_t H, slong d,
 int _wc_cdd_lp_point(fmpq * x, const fmpq_mat_t A, const fmpq * b,
                      const int * eq, wc_error_t err);
 
+/* Minimise c . x over { x : A_i . x >= b_i (eq[i] == 0), A_i . x = b_i
+   (eq[i] != 0) } (nv = cols(A) variables).  Returns 1 with x an optimal
+   basic solution and *val the optimum, 0 when the set is empty, 2 when
+   the objective is unbounded below, -1 (err set) when cddlib fails.  */
+int _wc_cdd_lp_min(fmpq * x, fmpq_t val, const fmpq_mat_t A, const fmpq * b,
+                   const int * eq, const fmpq * c, wc_error_t err);
+
 /* The same conversions in cddlib's double-precision build (the ddf_
    functions of libcddgmp), for floatcone.c only: rows of d_mat's, which
    the callee re-initialises (the caller inits and clears them, also on

@@ -16,6 +16,7 @@
 #include "wrench.h"
 #include "kinematics.h"
 #include "problem.h"
+#include "stability.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -54,6 +55,19 @@ int wc_modes_fprint(FILE * out, const wc_modes_t M, int json, int witness);
    "feasible", "witness" | "multipliers", "constraints", "problem"}.  */
 int wc_certificate_fprint(FILE * out, const wc_certificate_t C,
                           const wc_problem_t P, int json);
+
+/* classify and stability (stabprint.c).  JSON as SPEC 4.1, with extra
+   keys: classify adds "static_c" or "separator", and "paper_witness";
+   stability adds "paper_in_weak", "semantics_differ" and
+   "difference_witness".  A set is {"empty", "interior", "pieces"}.  */
+int wc_classify_fprint(FILE * out, const wc_classify_t R, int json);
+int wc_set_fprint_json(FILE * out, const wc_set_t S);
+int wc_set_fprint_text(FILE * out, const wc_set_t S, const char * indent);
+int wc_push_fprint(FILE * out, const wc_push_t R, int json,
+                   const char * indent);
+/* json: 0 text, 1 a JSON object and a newline, 2 the same object left
+   open (no closing brace) for the caller to add members to.  */
+int wc_stability_fprint(FILE * out, const wc_stability_t S, int json);
 
 #ifdef __cplusplus
 }

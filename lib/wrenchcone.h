@@ -24,6 +24,9 @@
 #include "print.h"
 #include "floatcone.h"
 #include "compare.h"
+#include "cells.h"
+#include "push.h"
+#include "stability.h"
 
 #ifdef __cplusplus
 extern "C" {

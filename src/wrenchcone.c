@@ -180,6 +180,56 @@ usage_compare(FILE * out)
 }
 
 static void
+usage_classify(FILE * out)
+{
+    fputs("Usage: " PROG " classify [OPTIONS] PROBLEM FX FY TAU\n"
+          "Decide one external wrench g = (FX, FY, TAU) (exact numbers) at zero\n"
+          "velocity, with exact LPs only (no cone conversion):\n"
+          "  - weakly stable: a static solution exists (its forces are printed, or a\n"
+          "    separating vector proving none does);\n"
+          "  - every moving solution, by the contact mode of the motion, with a\n"
+          "    witness (nudot, c);\n"
+          "  - strongly stable in the exact sense (weakly stable, no solution moves)\n"
+          "    and in the paper's sense (eq. 19: no Table 2 cone other than n..n\n"
+          "    holds g), side by side;\n"
+          "  - every contact mode (Table 2 letters: s l r n on touching fixels, s a on\n"
+          "    near ones) whose wrench cone holds g.\n"
+          "\n"
+          "Options:\n"
+          "  --certificate=FILE  write a strong-stability certificate (JSON) that\n"
+          "                   '" PROG " verify' re-checks with GMP alone: the static\n"
+          "                   forces or a separator, and a motion or a Farkas\n"
+          "                   certificate for every moving face\n"
+          "  --max-modes=N    list at most N modes (default 1000; 0: no limit).  The\n"
+          "                   list can be exponentially long: a wrench that three of\n"
+          "                   t touching fixels hold is held by 2^(t-3) strings\n"
+          "  --format=FMT     text (default) or json\n"
+          "  -h, --help       print this help and exit\n"
+          "  -V, --version    print versions and exit\n", out);
+}
+
+static void
+usage_stability(FILE * out)
+{
+    fputs("Usage: " PROG " stability [OPTIONS] PROBLEM\n"
+          "Compute exactly the weakly stable cone, and the strongly stable sets under\n"
+          "the exact semantics (weakly stable, no moving solution) and the paper's\n"
+          "(eq. 19), each as pairwise disjoint NNC cones in canonical form; with a\n"
+          "shape, the places a frictionless finger may push for each set.\n"
+          "\n"
+          "Options:\n"
+          "  --bias=FX,FY,TAU  a biasing wrench: report the largest disturbance rho such\n"
+          "                   that every disturbance d with ||d|| < rho keeps the\n"
+          "                   wrench strongly stable, in the norm\n"
+          "                   ||(fx, fy, tau)|| = max(|fx|, |fy|, |tau| / L)\n"
+          "                   (also accepted: --bias FX FY TAU)\n"
+          "  --length=L       the length L > 0 of that norm (default 1)\n"
+          "  --format=FMT     text (default) or json\n"
+          "  -h, --help       print this help and exit\n"
+          "  -V, --version    print versions and exit\n", out);
+}
+
+static void
 version(void)
 {
     printf(PROG " %s\n"
@@ -320,11 +370,12 @@ finish_output(void)
 }
 
 enum { OPT_FORMAT = 256, OPT_METHOD, OPT_TRACE, OPT_WITNESS, OPT_CERT,
-       OPT_ARITH };
+       OPT_ARITH, OPT_BIAS, OPT_LENGTH, OPT_MAXMODES };
 
 /* Which options a command takes, beyond --format, --help, --version.  */
 enum { TAKES_CDD = 1, TAKES_METHOD = 2, TAKES_TRACE = 4, TAKES_WITNESS = 8,
-       TAKES_CERT = 16, TAKES_ARITH = 32 };
+       TAKES_CERT = 16, TAKES_ARITH = 32, TAKES_BIAS = 64,
+       TAKES_MAXMODES = 128 };
 
 typedef struct
 {
@@ -334,6 +385,9 @@ typedef struct
     int witness;
     const char * certificate;
     int arith_double;   /* --arith=double */
+    const char * bias;  /* --bias=FX,FY,TAU */
+    const char * length;    /* --length=L */
+    long max_modes;     /* --max-modes=N */
 }
 options;
 
@@ -351,6 +405,9 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
         { "witness", no_argument, NULL, OPT_WITNESS },
         { "certificate", required_argument, NULL, OPT_CERT },
         { "arith", required_argument, NULL, OPT_ARITH },
+        { "bias", required_argument, NULL, OPT_BIAS },
+        { "length", required_argument, NULL, OPT_LENGTH },
+        { "max-modes", required_argument, NULL, OPT_MAXMODES },
         { "help", no_argument, NULL, 'h' },
         { "version", no_argument, NULL, 'V' },
         { NULL, 0, NULL, 0 }
@@ -363,6 +420,9 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
     o->witness = 0;
     o->certificate = NULL;
     o->arith_double = 0;
+    o->bias = NULL;
+    o->length = NULL;
+    o->max_modes = 1000;
     opterr = 0;
     optind = 1;
     while ((c = getopt_long(argc, argv, "hV", opts, &idx)) != -1)
@@ -371,7 +431,9 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
             || (c == OPT_TRACE && !(takes & TAKES_TRACE))
             || (c == OPT_WITNESS && !(takes & TAKES_WITNESS))
             || (c == OPT_CERT && !(takes & TAKES_CERT))
-            || (c == OPT_ARITH && !(takes & TAKES_ARITH)))
+            || (c == OPT_ARITH && !(takes & TAKES_ARITH))
+            || ((c == OPT_BIAS || c == OPT_LENGTH) && !(takes & TAKES_BIAS))
+            || (c == OPT_MAXMODES && !(takes & TAKES_MAXMODES)))
             return usage_error(cmd, "option '--%s' does not apply here",
                                opts[idx].name);
         switch (c)
@@ -407,6 +469,24 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
                 return usage_error(cmd, "unknown arithmetic '%s' (exact or double)",
                                    optarg);
             break;
+        case OPT_BIAS:
+            o->bias = optarg;
+            break;
+        case OPT_LENGTH:
+            o->length = optarg;
+            break;
+        case OPT_MAXMODES:
+        {
+            char * end;
+
+            errno = 0;
+            o->max_modes = strtol(optarg, &end, 10);
+            if (*optarg == '\0' || *end != '\0' || errno != 0
+                || o->max_modes < 0)
+                return usage_error(cmd, "--max-modes takes a count >= 0 "
+                                   "(0: no limit), not '%s'", optarg);
+            break;
+        }
         case 'h':
             help(stdout);
             return finish_output();
@@ -981,8 +1061,371 @@ cmd_compare(int argc, char ** argv)
     return status;
 }
 
+
+/* Parse the exact numbers of argv[0..k) as one vector; a bad one is an
+   input error located in "<what>" by its column in the operands joined
+   with single spaces.  */
+static int
+parse_numbers(fmpq * v, char ** args, slong k, const char * what,
+              wc_error_t err)
+{
+    slong i, col = 1;
+
+    for (i = 0; i < k; i++)
+    {
+        if (wc_parse_number(v + i, args[i], strlen(args[i]), err) != WC_OK)
+        {
+            char * why = wc_error_format(err);
+            int st = wc_error_set(err, WC_EINPUT, what, 1, col, "%s",
+                                  why != NULL ? why : "bad number");
+
+            free(why);
+            return st;
+        }
+        col += strlen(args[i]) + 1;
+    }
+    return WC_OK;
+}
+
+/* Write a certificate to path: no partial file is left, but only a file
+   this run created is ever removed.  */
+static int
+write_certificate(const char * path, const wc_problem_t P,
+                  const wc_classify_t R)
+{
+    struct stat st;
+    int existed = stat(path, &st) == 0;
+    FILE * f = fopen(path, "w");
+    int bad = f == NULL;
+
+    if (f != NULL)
+    {
+        bad = wc_classify_certificate_fprint(f, P, R) != WC_OK;
+        bad |= fclose(f) != 0;
+        if (bad && !existed)
+            remove(path);
+    }
+    if (bad)
+    {
+        fprintf(stderr, PROG ": %s: cannot write the certificate: %s\n",
+                path, strerror(errno));
+        return WC_EINTERNAL;
+    }
+    return WC_OK;
+}
+
+static int
+cmd_classify(int argc, char ** argv)
+{
+    options o;
+    int status;
+    wc_problem_t P;
+    wc_error_t err;
+    wc_classify_t R;
+    fmpq g[3];
+    slong k;
+
+    if ((status = parse_options(&o, argc, argv, "classify",
+                                TAKES_CERT | TAKES_MAXMODES,
+                                usage_classify)) >= 0)
+        return status;
+    if (argc - optind != 4)
+        return usage_error("classify", argc - optind < 4
+                           ? "classify needs PROBLEM FX FY TAU%s"
+                           : "classify takes PROBLEM FX FY TAU only%s", "");
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_classify_init(R);
+    for (k = 0; k < 3; k++)
+        fmpq_init(g + k);
+    status = load_problem(P, argv[optind], err);
+    if (status == WC_OK)
+        status = parse_numbers(g, argv + optind + 1, 3, "<wrench>", err);
+    if (status == WC_OK)
+        status = wc_classify(R, P, g, o.certificate != NULL, o.max_modes,
+                             err);
+    if (status != WC_OK)
+    {
+        report(err, status);
+        goto cleanup;
+    }
+    if (o.certificate != NULL
+        && (status = write_certificate(o.certificate, P, R)) != WC_OK)
+        goto cleanup;
+    wc_classify_fprint(stdout, R, o.fmt == FMT_JSON);
+    status = finish_output();
+
+cleanup:
+    for (k = 0; k < 3; k++)
+        fmpq_clear(g + k);
+    wc_classify_clear(R);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}
+
+/* The robustness of the biasing wrench b in both strong sets.  */
+static int
+print_bias(const wc_stability_t S, const fmpq * b, const fmpq_t L, int json,
+           wc_error_t err)
+{
+    const wc_set_struct * sets[2] = { S->strong, S->strong_paper };
+    const char * names[2] = { "exact", "paper" };
+    fmpq_t rho;
+    int i, closed, infinite, status = WC_OK;
+
+    fmpq_init(rho);
+    if (json)
+    {
+        fputs(", \"bias\": {\"wrench\": [", stdout);
+        for (i = 0; i < 3; i++)
+        {
+            fputs(i ? ", \"" : "\"", stdout);
+            wc_fprint_fmpq(stdout, b + i);
+            putchar('"');
+        }
+        fputs("], \"length\": \"", stdout);
+        wc_fprint_fmpq(stdout, L);
+        putchar('"');
+    }
+    else
+    {
+        fputs("biasing wrench b = (", stdout);
+        for (i = 0; i < 3; i++)
+        {
+            if (i)
+                fputs(", ", stdout);
+            wc_fprint_fmpq(stdout, b + i);
+        }
+        fputs("), disturbances measured by max(|fx|, |fy|, |tau| / ", stdout);
+        wc_fprint_fmpq(stdout, L);
+        fputs("):\n", stdout);
+    }
+    for (i = 0; i < 2 && status == WC_OK; i++)
+    {
+        status = wc_robustness(rho, &closed, &infinite, sets[i], S->cells, b,
+                               L, err);
+        if (status != WC_OK)
+            break;
+        if (json)
+        {
+            fprintf(stdout, ", \"%s\": {\"in_set\": %s, ", i == 0 ? "strong"
+                    : "strong_paper", wc_set_contains(sets[i], b)
+                    ? "true" : "false");
+            if (infinite)
+                fputs("\"rho\": null, \"unbounded\": true}", stdout);
+            else
+            {
+                fputs("\"rho\": \"", stdout);
+                wc_fprint_fmpq(stdout, rho);
+                fprintf(stdout, "\", \"closed\": %s}",
+                        closed ? "true" : "false");
+            }
+        }
+        else if (infinite)
+            printf("  %s: every disturbance keeps it strongly stable (the set "
+                   "is all of R^3)\n", names[i]);
+        else if (fmpq_is_zero(rho))
+            printf("  %s: rho = 0: b is %s\n", names[i],
+                   wc_set_contains(sets[i], b)
+                   ? "on the boundary of the strongly stable set"
+                   : "not strongly stable");
+        else
+        {
+            printf("  %s: rho = ", names[i]);
+            wc_fprint_fmpq(stdout, rho);
+            printf(": every disturbance d with ||d|| %s rho leaves b + d "
+                   "strongly stable%s\n", closed ? "<=" : "<",
+                   closed ? "" : " (some d with ||d|| = rho does not)");
+        }
+    }
+    if (json && status == WC_OK)
+        putchar('}');
+    fmpq_clear(rho);
+    return status;
+}
+
+static int
+cmd_stability(int argc, char ** argv)
+{
+    options o;
+    int status;
+    wc_problem_t P;
+    wc_error_t err;
+    wc_stability_t S;
+    fmpq b[3];
+    fmpq_t L;
+    slong k;
+    char * bias[3] = { NULL, NULL, NULL }, * copy = NULL;
+
+    if ((status = parse_options(&o, argc, argv, "stability", TAKES_BIAS,
+                                usage_stability)) >= 0)
+        return status;
+    if (argc - optind != 1)
+        return usage_error("stability", argc - optind < 1
+                           ? "stability needs PROBLEM%s"
+                           : "stability takes PROBLEM only%s", "");
+    if (o.bias != NULL)
+    {
+        char * p;
+
+        copy = malloc(strlen(o.bias) + 1);
+        strcpy(copy, o.bias);
+        bias[0] = copy;
+        for (k = 1, p = copy; k < 3 && (p = strchr(p, ',')) != NULL; k++)
+        {
+            *p++ = '\0';
+            bias[k] = p;
+        }
+        if (k < 3 || strchr(bias[2], ',') != NULL)
+        {
+            free(copy);
+            return usage_error("stability", "--bias takes three numbers "
+                               "FX,FY,TAU, not '%s'", o.bias);
+        }
+    }
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_stability_init(S);
+    for (k = 0; k < 3; k++)
+        fmpq_init(b + k);
+    fmpq_init(L);
+    fmpq_one(L);
+    status = load_problem(P, argv[optind], err);
+    if (status == WC_OK && o.bias != NULL)
+        status = parse_numbers(b, bias, 3, "<bias>", err);
+    if (status == WC_OK && o.length != NULL)
+    {
+        status = parse_numbers(L, (char **) &o.length, 1, "<length>", err);
+        if (status == WC_OK && fmpq_sgn(L) <= 0)
+            status = wc_error_set(err, WC_EINPUT, "<length>", 1, 1,
+                                  "the length must be positive");
+    }
+    if (status == WC_OK)
+        status = wc_stability(S, P, err);
+    if (status != WC_OK)
+    {
+        report(err, status);
+        goto cleanup;
+    }
+    /* Everything is computed before anything is printed.  */
+    if (o.bias != NULL)
+    {
+        fmpq_t rho;
+        int closed, infinite;
+
+        fmpq_init(rho);
+        status = wc_robustness(rho, &closed, &infinite, S->strong, S->cells,
+                               b, L, err);
+        fmpq_clear(rho);
+        if (status != WC_OK)
+        {
+            report(err, status);
+            goto cleanup;
+        }
+    }
+    if (o.fmt == FMT_JSON)
+    {
+        wc_stability_fprint(stdout, S, 2);
+        if (o.bias != NULL && (status = print_bias(S, b, L, 1, err)) != WC_OK)
+        {
+            report(err, status);
+            goto cleanup;
+        }
+        fputs("}\n", stdout);
+    }
+    else
+    {
+        wc_stability_fprint(stdout, S, 0);
+        if (o.bias != NULL && (status = print_bias(S, b, L, 0, err)) != WC_OK)
+        {
+            report(err, status);
+            goto cleanup;
+        }
+    }
+    status = finish_output();
+
+cleanup:
+    free(copy);
+    for (k = 0; k < 3; k++)
+        fmpq_clear(b + k);
+    fmpq_clear(L);
+    wc_stability_clear(S);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}
+
+/* Operands of classify and stability may be negative numbers ("-1"),
+   which getopt would take for options: move every argument that is not an
+   option (or an option's value) after a "--".  --bias FX FY TAU becomes
+   --bias=FX,FY,TAU.  Returns a malloc'd argv (the strings are argv's or
+   the one malloc'd *extra).  */
+static char **
+operands_last(int * pargc, char ** argv, char ** extra)
+{
+    static const char * const valued[] = {
+        "--format", "--certificate", "--length", "--bias", "--max-modes",
+        NULL
+    };
+    int argc = *pargc, i, j, no = 0, nx = 0, k;
+    char ** opt = malloc(sizeof(char *) * (argc + 2));
+    char ** ops = malloc(sizeof(char *) * (argc + 2));
+    char ** out;
+
+    *extra = NULL;
+    for (i = 1; i < argc; i++)
+    {
+        const char * a = argv[i];
+
+        if (strcmp(a, "--") == 0)
+        {
+            for (i++; i < argc; i++)
+                ops[nx++] = argv[i];
+            break;
+        }
+        if (a[0] != '-' || a[1] == '\0' || (a[1] >= '0' && a[1] <= '9')
+            || a[1] == '.')
+        {
+            ops[nx++] = argv[i];
+            continue;
+        }
+        opt[no++] = argv[i];
+        for (k = 0; valued[k] != NULL; k++)
+            if (strcmp(a, valued[k]) == 0)
+                break;
+        if (valued[k] == NULL)
+            continue;
+        if (strcmp(a, "--bias") == 0 && i + 3 < argc && *extra == NULL)
+        {
+            size_t len = strlen("--bias=") + strlen(argv[i + 1])
+                + strlen(argv[i + 2]) + strlen(argv[i + 3]) + 3;
+
+            *extra = malloc(len);
+            snprintf(*extra, len, "--bias=%s,%s,%s", argv[i + 1],
+                     argv[i + 2], argv[i + 3]);
+            opt[no - 1] = *extra;
+            i += 3;
+        }
+        else if (i + 1 < argc)
+            opt[no++] = argv[++i];
+    }
+    out = malloc(sizeof(char *) * (no + nx + 3));
+    out[0] = argv[0];
+    for (j = 0; j < no; j++)
+        out[1 + j] = opt[j];
+    out[1 + no] = (char *) "--";
+    for (j = 0; j < nx; j++)
+        out[2 + no + j] = ops[j];
+    out[2 + no + nx] = NULL;
+    *pargc = 2 + no + nx;
+    free(opt);
+    free(ops);
+    return out;
+}
+
 static const char * const planned[] = {
-    "classify", "stability", "plan", "sweep", "draw", NULL
+    "plan", "sweep", "draw", NULL
 };
 
 int
@@ -1017,6 +1460,16 @@ main(int argc, char ** argv)
         status = cmd_random(argc - 1, argv + 1);
     else if (strcmp(argv[1], "compare") == 0)
         status = cmd_compare(argc - 1, argv + 1);
+    else if (strcmp(argv[1], "classify") == 0
+             || strcmp(argv[1], "stability") == 0)
+    {
+        int n = argc - 1;
+        char * extra, ** v = operands_last(&n, argv + 1, &extra);
+
+        status = argv[1][1] == 'l' ? cmd_classify(n, v) : cmd_stability(n, v);
+        free(v);
+        free(extra);
+    }
     else
     {
         for (i = 0; planned[i] != NULL; i++)

@@ -1,0 +1,382 @@
+/* stabprint.c -- text and JSON for classify and stability (SPEC 4.1).
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.  */
+
+#include <config.h>
+
+#include <string.h>
+
+#include "wrenchcone.h"
+
+static int
+done(FILE * out)
+{
+    return ferror(out) ? WC_EINTERNAL : WC_OK;
+}
+
+static void
+qvec(FILE * out, const fmpq * v, slong len, int json)
+{
+    slong j;
+
+    putc(json ? '[' : '(', out);
+    for (j = 0; j < len; j++)
+    {
+        if (j)
+            fputs(", ", out);
+        if (json)
+            putc('"', out);
+        wc_fprint_fmpq(out, v + j);
+        if (json)
+            putc('"', out);
+    }
+    putc(json ? ']' : ')', out);
+}
+
+static void
+zvec(FILE * out, const fmpz * v, slong len, int json)
+{
+    slong j;
+
+    putc(json ? '[' : '(', out);
+    for (j = 0; j < len; j++)
+    {
+        if (j)
+            fputs(", ", out);
+        if (json)
+            putc('"', out);
+        fmpz_fprint(out, v + j);
+        if (json)
+            putc('"', out);
+    }
+    putc(json ? ']' : ')', out);
+}
+
+static const char *
+yes(int b)
+{
+    return b ? "yes" : "no";
+}
+
+static const char *
+tf(int b)
+{
+    return b ? "true" : "false";
+}
+
+/* The forces of a solution in words: only the loaded fixels.  */
+static void
+text_forces(FILE * out, const fmpq * c, slong n)
+{
+    slong i;
+    int any = 0;
+
+    for (i = 0; i < n; i++)
+        if (!fmpq_is_zero(c + i) || !fmpq_is_zero(c + n + i))
+        {
+            fprintf(out, "%sfixel %ld (", any ? ", " : "", (long) i + 1);
+            wc_fprint_fmpq(out, c + i);
+            fputs(", ", out);
+            wc_fprint_fmpq(out, c + n + i);
+            putc(')', out);
+            any = 1;
+        }
+    if (!any)
+        fputs("none", out);
+}
+
+int
+wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
+{
+    slong i, n = R->n;
+
+    if (json)
+    {
+        fputs("{\"wrench\": ", out);
+        qvec(out, R->g, 3, 1);
+        fputs(", \"modes\": [", out);
+        for (i = 0; i < R->nmodes; i++)
+        {
+            if (i)
+                fputs(", ", out);
+            wc_fprint_json_string(out, R->modes[i]);
+        }
+        fprintf(out, "], \"modes_complete\": %s, \"weakly_stable\": %s, \"strongly_stable\": %s, "
+                "\"strongly_stable_paper\": %s, \"motions\": [",
+                tf(R->modes_complete), tf(R->weak), tf(R->strong),
+                tf(R->strong_paper));
+        for (i = 0; i < R->nmotions; i++)
+        {
+            fputs(i ? ", {\"sign\": " : "{\"sign\": ", out);
+            wc_fprint_json_string(out, R->motions[i].sign);
+            fputs(", \"nudot\": ", out);
+            qvec(out, R->motions[i].nudot, 3, 1);
+            fputs(", \"c\": ", out);
+            qvec(out, R->motions[i].c, 2 * n, 1);
+            putc('}', out);
+        }
+        fputs("]", out);
+        if (R->weak)
+        {
+            fputs(", \"static_c\": ", out);
+            qvec(out, R->weak_c, 2 * n, 1);
+        }
+        else
+        {
+            fputs(", \"separator\": ", out);
+            qvec(out, R->weak_sep, 3, 1);
+        }
+        if (!R->strong_paper)
+        {
+            fputs(", \"paper_witness\": {\"mode\": ", out);
+            wc_fprint_json_string(out, R->paper.sign);
+            fputs(", \"nudot\": ", out);
+            qvec(out, R->paper.nudot, 3, 1);
+            fputs(", \"c\": ", out);
+            qvec(out, R->paper.c, 2 * n, 1);
+            putc('}', out);
+        }
+        fputs("}\n", out);
+        return done(out);
+    }
+
+    fputs("wrench g = ", out);
+    qvec(out, R->g, 3, 0);
+    fputs("  (fx, fy, torque)\n", out);
+    fprintf(out, "weakly stable: %s\n", yes(R->weak));
+    if (R->weak)
+    {
+        fputs("  static forces (c_n, c_t): ", out);
+        text_forces(out, R->weak_c, n);
+        fputs("\n", out);
+    }
+    else
+    {
+        fputs("  separator y: y . g > 0, y . (-J c) <= 0 for every admissible"
+              " force: y = ", out);
+        qvec(out, R->weak_sep, 3, 0);
+        putc('\n', out);
+    }
+    fprintf(out, "strongly stable (exact semantics, Pang and Trinkle): %s\n",
+            yes(R->strong));
+    if (R->strong)
+        fputs("  no moving face admits a solution (every face decided by an"
+              " exact LP;\n  --certificate writes a Farkas certificate per"
+              " face)\n", out);
+    else if (!R->weak)
+        fputs("  not weakly stable\n", out);
+    fprintf(out, "strongly stable (paper semantics, eq. 19): %s\n",
+            yes(R->strong_paper));
+    if (!R->strong_paper)
+    {
+        fprintf(out, "  W(%s) holds the wrench: nudot = ", R->paper.sign);
+        qvec(out, R->paper.nudot, 3, 0);
+        fputs(", forces ", out);
+        text_forces(out, R->paper.c, n);
+        putc('\n', out);
+    }
+    if (R->strong != R->strong_paper)
+        fprintf(out, "  the semantics differ for this wrench: %s\n",
+                R->strong ? "no solution moves, but a mode other than n..n "
+                "holds it (eq. 19 also excludes wrenches that a subset of "
+                "the fixels holds)"
+                : "eq. 19 keeps it, but a solution moves or it is not weakly"
+                " stable");
+    fprintf(out, "modes whose Table 2 cone holds the wrench (%s%ld):",
+            R->modes_complete ? "" : "the first ", (long) R->nmodes);
+    for (i = 0; i < R->nmodes; i++)
+        fprintf(out, " %s", R->modes[i]);
+    if (!R->modes_complete)
+        fputs(" ... (the list stops here: --max-modes)", out);
+    putc('\n', out);
+    fprintf(out, "motions (nudot != 0) (%ld):%s\n", (long) R->nmotions,
+            R->nmotions ? "" : " none");
+    for (i = 0; i < R->nmotions; i++)
+    {
+        fprintf(out, "  %s  nudot = ", R->motions[i].sign);
+        qvec(out, R->motions[i].nudot, 3, 0);
+        fputs("  forces ", out);
+        text_forces(out, R->motions[i].c, n);
+        putc('\n', out);
+    }
+    return done(out);
+}
+
+int
+wc_set_fprint_json(FILE * out, const wc_set_t S)
+{
+    slong i;
+
+    fprintf(out, "{\"empty\": %s, \"interior\": %s, \"pieces\": [",
+            tf(S->empty), tf(S->interior));
+    for (i = 0; i < S->npieces; i++)
+    {
+        if (i)
+            fputs(", ", out);
+        wc_cone_fprint_json(out, S->pieces + i);
+    }
+    fputs("]}", out);
+    return done(out);
+}
+
+int
+wc_set_fprint_text(FILE * out, const wc_set_t S, const char * indent)
+{
+    slong i;
+    char * in2 = malloc(strlen(indent) + 5);
+
+    strcpy(in2, indent);
+    strcat(in2, "    ");
+    if (S->empty)
+        fprintf(out, "%sempty\n", indent);
+    else
+        fprintf(out, "%s%ld pairwise disjoint piece%s, %s interior\n", indent,
+                (long) S->npieces, S->npieces == 1 ? "" : "s",
+                S->interior ? "with" : "no");
+    for (i = 0; i < S->npieces; i++)
+    {
+        fprintf(out, "%s  piece %ld:\n", indent, (long) i + 1);
+        wc_cone_fprint_text(out, S->pieces + i, in2);
+    }
+    free(in2);
+    return done(out);
+}
+
+int
+wc_push_fprint(FILE * out, const wc_push_t R, int json, const char * indent)
+{
+    slong i;
+
+    if (json)
+        putc('[', out);
+    else if (R->count == 0)
+        fprintf(out, "%snowhere\n", indent);
+    for (i = 0; i < R->count; i++)
+    {
+        const wc_push_interval_struct * v = R->iv + i;
+
+        if (json)
+        {
+            if (i)
+                fputs(", ", out);
+            if (R->kind == WC_SHAPE_POLYGON)
+            {
+                fprintf(out, "{\"edge\": %ld, \"from\": \"", (long) v->edge);
+                wc_fprint_fmpq(out, v->from);
+                fputs("\", \"to\": \"", out);
+                wc_fprint_fmpq(out, v->to);
+                putc('"', out);
+            }
+            else
+            {
+                fputs("{\"from\": ", out);
+                zvec(out, v->dfrom, 2, 1);
+                fputs(", \"to\": ", out);
+                zvec(out, v->dto, 2, 1);
+            }
+            fprintf(out, ", \"from_closed\": %s, \"to_closed\": %s",
+                    tf(v->from_closed), tf(v->to_closed));
+            if (v->full)
+                fputs(", \"full\": true", out);
+            putc('}', out);
+            continue;
+        }
+        if (R->kind == WC_SHAPE_POLYGON)
+        {
+            fprintf(out, "%sedge %ld: s in %c", indent, (long) v->edge,
+                    v->from_closed ? '[' : '(');
+            wc_fprint_fmpq(out, v->from);
+            fputs(", ", out);
+            wc_fprint_fmpq(out, v->to);
+            fprintf(out, "%c\n", v->to_closed ? ']' : ')');
+        }
+        else if (v->full)
+            fprintf(out, "%sthe whole circle\n", indent);
+        else
+        {
+            fprintf(out, "%sarc from direction %c", indent,
+                    v->from_closed ? '[' : '(');
+            zvec(out, v->dfrom, 2, 0);
+            fputs(" counter-clockwise to ", out);
+            zvec(out, v->dto, 2, 0);
+            fprintf(out, "%c\n", v->to_closed ? ']' : ')');
+        }
+    }
+    if (json)
+        putc(']', out);
+    return done(out);
+}
+
+int
+wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
+{
+    if (json)
+    {
+        fputs("{\"weak\": ", out);
+        wc_cone_fprint_json(out, S->weak);
+        fputs(", \"strong\": ", out);
+        wc_set_fprint_json(out, S->strong);
+        fputs(", \"strong_paper\": ", out);
+        wc_set_fprint_json(out, S->strong_paper);
+        fprintf(out, ", \"paper_in_weak\": %s, \"semantics_differ\": %s",
+                tf(S->paper_in_weak), tf(S->differ));
+        if (S->differ)
+        {
+            fputs(", \"difference_witness\": {\"wrench\": ", out);
+            qvec(out, S->diff_g, 3, 1);
+            fprintf(out, ", \"strong\": %s, \"strong_paper\": %s}",
+                    tf(S->diff_in_exact), tf(!S->diff_in_exact));
+        }
+        if (S->has_push)
+        {
+            fputs(", \"push\": {\"weak\": ", out);
+            wc_push_fprint(out, S->push_weak, 1, "");
+            fputs(", \"strong\": ", out);
+            wc_push_fprint(out, S->push_strong, 1, "");
+            fputs(", \"strong_paper\": ", out);
+            wc_push_fprint(out, S->push_strong_paper, 1, "");
+            putc('}', out);
+        }
+        if (json == 1)
+            fputs("}\n", out);
+        return done(out);
+    }
+    fputs("weakly stable wrenches (a static solution exists; closed):\n",
+          out);
+    wc_cone_fprint_text(out, S->weak, "  ");
+    fputs("strongly stable wrenches, exact semantics (weakly stable, no "
+          "solution moves):\n", out);
+    wc_set_fprint_text(out, S->strong, "  ");
+    fputs("strongly stable wrenches, paper semantics (eq. 19: in no W(x), "
+          "x != n..n):\n", out);
+    wc_set_fprint_text(out, S->strong_paper, "  ");
+    if (S->differ)
+    {
+        fputs("the semantics differ: e.g. g = ", out);
+        qvec(out, S->diff_g, 3, 0);
+        fprintf(out, " is strongly stable under %s only%s\n",
+                S->diff_in_exact ? "the definition (exact)"
+                : "eq. 19 (paper)",
+                S->diff_in_exact ? "; eq. 19 excludes it (a mode other than"
+                " n..n holds it)" : "; under the definition it moves or is "
+                "not weakly stable");
+    }
+    else
+        fputs("the semantics agree for this problem\n", out);
+    if (!S->paper_in_weak)
+        fputs("note: eq. 19's set holds wrenches that are not weakly stable "
+              "(no solution at all)\n", out);
+    if (S->has_push)
+    {
+        fputs("pushing regions of a frictionless finger:\n  weakly stable:\n",
+              out);
+        wc_push_fprint(out, S->push_weak, 0, "    ");
+        fputs("  strongly stable (exact):\n", out);
+        wc_push_fprint(out, S->push_strong, 0, "    ");
+        fputs("  strongly stable (paper):\n", out);
+        wc_push_fprint(out, S->push_strong_paper, 0, "    ");
+    }
+    return done(out);
+}

@@ -1,0 +1,120 @@
+#!/bin/sh
+# cli-stability.sh -- `wrenchcone classify` and `wrenchcone stability` end
+# to end: the paper's Figure 5 disk, exact verdicts and sets, negative
+# numbers as operands, located errors for bad numbers, exit statuses, the
+# certificate round trip through `verify`, and the robustness report.
+#
+# Copyright (C) 2026 the wrenchcone authors.
+# This file is part of wrenchcone, free software under the GNU General
+# Public License, version 2 or (at your option) any later version.
+#
+# Run by make check with WRENCHCONE and top_srcdir in the environment.
+# Silent on success; prints each failing case and exits 1.
+
+: "${WRENCHCONE:?WRENCHCONE is not set}"
+: "${top_srcdir:?top_srcdir is not set}"
+
+W=$WRENCHCONE
+D="$top_srcdir/data"
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/cli-stability.XXXXXX") || exit 99
+trap 'rm -rf "$tmp"' EXIT
+failed=0
+fail() { echo "FAIL: $*"; failed=1; }
+
+command -v python3 > /dev/null 2>&1 || { echo "SKIP: no python3"; exit 77; }
+
+# Figure 5, pushing straight down into fixel 1: held by fixel 1 alone, no
+# solution moves (strongly stable by the definition), but W(ns) holds it,
+# so eq. 19 excludes it.
+"$W" classify --format=json "$D/disk-two-fixels.wc" 0 -1 0 > "$tmp/c" 2> "$tmp/e" \
+    || fail "classify figure 5: exit $?: $(cat "$tmp/e")"
+python3 - "$tmp/c" <<'PY' || fail "classify figure 5 JSON"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["wrench"] == ["0", "-1", "0"], d
+assert d["weakly_stable"] is True and d["strongly_stable"] is True, d
+assert d["strongly_stable_paper"] is False, d
+assert d["modes"] == ["nn", "ns"] and d["modes_complete"] is True, d
+assert d["motions"] == [], d
+assert d["static_c"] == ["1", "0", "0", "0"], d
+assert d["paper_witness"]["mode"] == "ns", d
+PY
+
+# Pulling up, away from fixel 1: not weakly stable; the disk rolls on
+# fixel 2 (mode sn) with an exact witness.
+"$W" classify --format=json "$D/disk-two-fixels.wc" 1 1 0 > "$tmp/c" 2> "$tmp/e" \
+    || fail "classify (1, 1, 0): exit $?"
+python3 - "$tmp/c" <<'PY' || fail "classify (1, 1, 0) JSON"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["weakly_stable"] is False and d["strongly_stable"] is False, d
+assert d["strongly_stable_paper"] is False, d
+assert [m["sign"] for m in d["motions"]] == ["sn"], d
+assert d["motions"][0]["nudot"] == ["0", "1/2", "-1/2"], d
+PY
+
+# Bad operands: a located error, nothing on stdout.
+"$W" classify "$D/disk-two-fixels.wc" 0 -1 1/0 > "$tmp/o" 2> "$tmp/e"
+[ $? -eq 1 ] && [ ! -s "$tmp/o" ] && grep -q '^wrenchcone: <wrench>:1:6: ' "$tmp/e" \
+    || fail "bad wrench number: want exit 1 and <wrench>:1:6 ($(cat "$tmp/e"))"
+"$W" classify "$D/disk-two-fixels.wc" 0 -1 > "$tmp/o" 2> /dev/null
+[ $? -eq 2 ] && [ ! -s "$tmp/o" ] || fail "classify arity: want exit 2"
+"$W" stability --bias=1,2 "$D/disk-two-fixels.wc" > "$tmp/o" 2> /dev/null
+[ $? -eq 2 ] && [ ! -s "$tmp/o" ] || fail "--bias with two numbers: want exit 2"
+"$W" stability --length=-1 --bias 1 -1 0 "$D/disk-two-fixels.wc" > "$tmp/o" 2> "$tmp/e"
+[ $? -eq 1 ] && [ ! -s "$tmp/o" ] && grep -q '<length>' "$tmp/e" \
+    || fail "negative length: want exit 1"
+"$W" classify --bias=1,2,3 "$D/disk-two-fixels.wc" 0 0 0 > "$tmp/o" 2> /dev/null
+[ $? -eq 2 ] && [ ! -s "$tmp/o" ] || fail "--bias on classify: want exit 2"
+
+# stability: the sets, both semantics, the push regions, the bias.
+"$W" stability --format=json --bias 1 -1 0 "$D/disk-two-fixels.wc" > "$tmp/s" 2> "$tmp/e" \
+    || fail "stability figure 5: exit $?: $(cat "$tmp/e")"
+python3 - "$tmp/s" <<'PY' || fail "stability figure 5 JSON"
+import json, sys
+d = json.load(open(sys.argv[1]))
+# mu = 1 puts each fixel exactly on the edge of the other's friction cone:
+# Nguyen's condition holds only for mu > 1, so the weak set is a wedge
+# around the squeezing line (1, 1, 1), not all of R^3.
+w = d["weak"]
+assert w["dim"] == 3 and w["lineality_dim"] == 1, w
+assert w["lines"] == [["1", "1", "1"]], w
+assert w["inequalities"] == [["-1", "0", "1"], ["0", "1", "-1"]], w
+for k in ("strong", "strong_paper"):
+    s = d[k]
+    assert s["empty"] is False and s["interior"] is True, s
+assert d["semantics_differ"] is True
+assert d["push"]["strong"] == [{"from": ["0", "1"], "to": ["-1", "0"],
+                                "from_closed": True, "to_closed": True}], d["push"]
+assert d["push"]["strong_paper"] == [{"from": ["0", "1"], "to": ["-1", "0"],
+                                      "from_closed": False, "to_closed": False}], d["push"]
+b = d["bias"]
+assert b["strong"] == {"in_set": True, "rho": "1/2", "closed": True}, b
+assert b["strong_paper"] == {"in_set": True, "rho": "1/2", "closed": False}, b
+PY
+
+# With mu = 11/10 Nguyen's condition holds: the weak set is R^3.
+sed 's|^friction 1$|friction 11/10|' "$D/disk-two-fixels.wc" > "$tmp/f.wc"
+"$W" stability --format=json "$tmp/f.wc" > "$tmp/s" 2> /dev/null || fail "mu 11/10: exit $?"
+python3 - "$tmp/s" <<'PY' || fail "mu 11/10: the weak set should be R^3"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["weak"]["dim"] == 3 and d["weak"]["lineality_dim"] == 3, d["weak"]
+assert d["push"]["weak"][0].get("full") is True, d["push"]
+PY
+
+# The text output says how the semantics differ.
+"$W" stability "$D/disk-two-fixels.wc" > "$tmp/t" 2> /dev/null || fail "stability text"
+grep -q '^the semantics differ' "$tmp/t" || fail "text lacks the semantics line"
+
+# Certificates: written, and checked by verify with GMP alone.
+if "$W" verify --help 2>/dev/null | grep -q strong-stability; then
+    for g in "0 -1 0" "1 1 0" "1 -1 0"; do
+        # shellcheck disable=SC2086
+        "$W" classify --certificate="$tmp/cert.json" "$D/disk-two-fixels.wc" $g > /dev/null 2>&1 \
+            || fail "classify --certificate ($g)"
+        "$W" verify "$tmp/cert.json" > "$tmp/o" 2>&1 || fail "verify certificate of ($g): $(cat "$tmp/o")"
+    done
+fi
+
+exit $failed
