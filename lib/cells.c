@@ -206,6 +206,11 @@ pow2_at_least(slong n)
     return s;
 }
 
+/* Planes with entries below 2^16 give lines below 2^33 and sector points
+   below 2^34, and all the dot products the walk needs fit a 64-bit word
+   (below 3 2^50): then it does them in words.  */
+#define SMALL_BITS 16
+
 /* ---------------------------------------------------------------------
    The cell list under construction.  Signs are kept as keys: sign + 1
    in a byte, so that memcmp orders them - < 0 < +.  */
@@ -214,6 +219,8 @@ typedef struct
 {
     slong m;                /* planes */
     const fmpz_mat_struct * H;
+    slong * h64;            /* H as words when its entries are below
+                               2^SMALL_BITS, else NULL */
     slong cap;              /* cells expected (keys have room for one
                                more, the candidate) */
     slong count;
@@ -233,6 +240,22 @@ cell_list_init(cell_list * L, const fmpz_mat_t H, slong cap)
 
     L->m = fmpz_mat_nrows(H);
     L->H = H;
+    L->h64 = NULL;
+#if FLINT_BITS == 64
+    L->h64 = flint_malloc(sizeof(slong) * 3 * L->m);
+    for (i = 0; i < 3 * L->m && L->h64 != NULL; i++)
+    {
+        const fmpz * x = fmpz_mat_entry(H, i / 3, i % 3);
+
+        if (fmpz_bits(x) > SMALL_BITS)
+        {
+            flint_free(L->h64);
+            L->h64 = NULL;
+        }
+        else
+            L->h64[i] = fmpz_get_si(x);
+    }
+#endif
     L->cap = cap;
     L->count = 0;
     L->key = flint_malloc((cap + 1) * L->m);
@@ -253,6 +276,7 @@ cell_list_clear(cell_list * L)
     _fmpz_vec_clear(L->pt, 3 * (L->cap + 1));
     flint_free(L->dim);
     flint_free(L->slot);
+    flint_free(L->h64);
 }
 
 /* The key of the next cell, to be filled in before cell_list_add.  */
@@ -453,6 +477,7 @@ typedef struct
     const line_set * Ls;
     angle_ref * ang;        /* room for m */
     fmpz * hh;              /* h_q . h_p, m entries */
+    slong * hh64;           /* the same in words, with L->h64 */
     fmpz * mid;
     fmpz * u;
     fmpz * w;
@@ -470,8 +495,30 @@ static int
 chamber_multiplier(walk * W, slong p, const unsigned char * seckey)
 {
     const fmpz_mat_struct * H = W->L->H;
+    const slong * h64 = W->L->h64;
     slong m = W->L->m, q;
 
+    if (h64 != NULL)
+    {
+        slong x = fmpz_get_si(W->mid), y = fmpz_get_si(W->mid + 1),
+            z = fmpz_get_si(W->mid + 2), k = 0;
+
+        for (q = 0; q < m; q++)
+        {
+            slong d = h64[3 * q] * x + h64[3 * q + 1] * y + h64[3 * q + 2] * z;
+            slong e = W->hh64[q];
+
+            if ((d > 0) - (d < 0) + 1 != seckey[q])
+                return 0;
+            if (q == p || e == 0)
+                continue;
+            e = FLINT_ABS(e) / FLINT_ABS(d);
+            if (e > k)
+                k = e;
+        }
+        fmpz_set_si(W->k, k + 1);
+        return 1;
+    }
     fmpz_zero(W->k);
     for (q = 0; q < m; q++)
     {
@@ -523,7 +570,11 @@ walk_plane(walk * W, slong p, const slong * lines, slong k,
     qsort(W->ang, k, sizeof(angle_ref), angle_cmp);
 
     for (q = 0; q < m; q++)
+    {
         _fmpz_vec_dot(W->hh + q, ROW(H, q), h, 3);
+        if (L->h64 != NULL)
+            W->hh64[q] = fmpz_get_si(W->hh + q);
+    }
 
     /* Rays j = 0 .. 2k - 1: line j mod k, turned for j >= k.  Arc j runs
        from ray j to ray j + 1.  */
@@ -665,11 +716,27 @@ wc_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
         const fmpz * d = ROW(Ls.v, i);
         unsigned char * k1 = cell_list_next(&L), * k2 = k1 + m;
 
-        for (q = 0; q < m; q++)
+        if (L.h64 != NULL)
         {
-            k1[q] = (unsigned char) (1 + dot_sgn(ROW(H, q), d, t));
-            k2[q] = (unsigned char) (2 - k1[q]);
+            slong x = fmpz_get_si(d), y = fmpz_get_si(d + 1),
+                z = fmpz_get_si(d + 2);
+            const slong * h64 = L.h64;
+
+            for (q = 0; q < m; q++)
+            {
+                slong e = h64[3 * q] * x + h64[3 * q + 1] * y
+                    + h64[3 * q + 2] * z;
+
+                k1[q] = (unsigned char) (1 + (e > 0) - (e < 0));
+                k2[q] = (unsigned char) (2 - k1[q]);
+            }
         }
+        else
+            for (q = 0; q < m; q++)
+            {
+                k1[q] = (unsigned char) (1 + dot_sgn(ROW(H, q), d, t));
+                k2[q] = (unsigned char) (2 - k1[q]);
+            }
         if (cell_list_add(&L, 1, &at) >= 0)
             break;
         _fmpz_vec_set(L.pt + 3 * at, d, 3);
@@ -695,6 +762,7 @@ wc_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
         fmpz_init(W.ang[i].y);
     }
     W.hh = _fmpz_vec_init(m);
+    W.hh64 = flint_malloc(sizeof(slong) * m);
     W.mid = _fmpz_vec_init(3);
     W.u = _fmpz_vec_init(3);
     W.w = _fmpz_vec_init(3);
@@ -717,6 +785,7 @@ wc_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
     }
     flint_free(W.ang);
     _fmpz_vec_clear(W.hh, m);
+    flint_free(W.hh64);
     _fmpz_vec_clear(W.mid, 3);
     _fmpz_vec_clear(W.u, 3);
     _fmpz_vec_clear(W.w, 3);
@@ -1036,26 +1105,85 @@ in_box(const unsigned char * T, const signed char * s, slong m)
     return 1;
 }
 
+/* The two chambers beside every sector: adj[2 s] on the - side of its
+   plane, adj[2 s + 1] on the + side (-1 for cells that are no sectors);
+   plane[s] the sector's plane.  By a hash table on the chambers' signs.  */
+static void
+sector_sides(slong * adj, slong * plane, const wc_cells_t A)
+{
+    slong m = A->nplanes, count = A->count, size, i, j, q, side;
+    slong * slot;
+    uint64_t * h = flint_malloc(sizeof(uint64_t) * (count + 1));
+    signed char * t = flint_malloc(m + 1);
+
+    size = pow2_at_least(2 * count + 2);
+    slot = flint_malloc(sizeof(slong) * size);
+    for (j = 0; j < size; j++)
+        slot[j] = -1;
+    for (i = 0; i < count; i++)
+        if (A->dim[i] == 3)
+        {
+            h[i] = bytes_hash((const unsigned char *) (A->sign + i * m), m);
+            for (j = (slong) (h[i] & (size - 1)); slot[j] >= 0;
+                 j = (j + 1) & (size - 1))
+                ;
+            slot[j] = i;
+        }
+    for (i = 0; i < count; i++)
+    {
+        adj[2 * i] = adj[2 * i + 1] = plane[i] = -1;
+        if (A->dim[i] != 2)
+            continue;
+        memcpy(t, A->sign + i * m, m);
+        for (q = 0; q < m && t[q] != 0; q++)
+            ;
+        plane[i] = q;
+        for (side = 0; side < 2; side++)
+        {
+            uint64_t g;
+
+            t[q] = (signed char) (2 * side - 1);
+            g = bytes_hash((const unsigned char *) t, m);
+            for (j = (slong) (g & (size - 1)); slot[j] >= 0;
+                 j = (j + 1) & (size - 1))
+                if (h[slot[j]] == g
+                    && memcmp(A->sign + slot[j] * m, t, m) == 0)
+                {
+                    adj[2 * i + side] = slot[j];
+                    break;
+                }
+        }
+    }
+    flint_free(slot);
+    flint_free(h);
+    flint_free(t);
+}
+
 /* Top-down: the member cells of a region (a node: a range of idx, with
    the non-members of the region that might matter) go into the tightest
    box T holding them.  When T holds no non-member, T is a piece: it is
    exactly the union of the member cells in it.  Otherwise the region is
    split along one plane p into two convex parts of T's sign set on p, so
-   that every member goes to one part and the parts hold fewer members
-   each.  The plane and the parts are chosen to leave as many members as
-   possible in parts without non-members, then to leave the fewest cells
-   of the minority kind in each part.  Appends the pieces' sign sets to
-   *out (n of them so far, room for *alloc).  */
+   that every member goes to one part and each part holds fewer members.
+   The plane is one where a member and a non-member of the region meet
+   across a sector, when there is one (a wall of the set: cutting along
+   other planes only cuts pieces apart); the plane and the parts are
+   chosen to leave as many members as possible in parts without
+   non-members, then to leave the fewest cells of the minority kind in
+   each part.  Appends the pieces' sign sets to *out (n of them so far,
+   room for *alloc).  */
 static void
 split_boxes(unsigned char ** out, slong * n, slong * alloc,
             const wc_cells_t A, const int * member)
 {
-    slong m = A->nplanes, count = A->count, i, q, top = 0;
+    slong m = A->nplanes, count = A->count, i, q, top = 0, stamp = 0;
     slong * idx = flint_malloc(sizeof(slong) * count);
     slong * tmp = flint_malloc(sizeof(slong) * count);
     slong * stack = flint_malloc(sizeof(slong) * 2 * (count + 1));
     slong * cm = flint_malloc(sizeof(slong) * 3 * m);
     slong * cb = flint_malloc(sizeof(slong) * 3 * m);
+    slong * wall = flint_malloc(sizeof(slong) * m);
+    slong * adj = NULL, * plane = NULL, * mark = NULL;
     unsigned char * T = flint_malloc(m);
 
     for (i = 0; i < count; i++)
@@ -1065,7 +1193,7 @@ split_boxes(unsigned char ** out, slong * n, slong * alloc,
     while (top > 0)
     {
         slong hi = stack[--top], lo = stack[--top], len, nm = 0, nb = 0;
-        slong p = -1, bp = -1, bmis = 0, n1 = 0, n2 = 0;
+        slong p = -1, bp = -1, bmis = 0, n1 = 0, n2 = 0, walls = 0;
         unsigned char part = 0;
 
         len = hi - lo;
@@ -1100,6 +1228,40 @@ split_boxes(unsigned char ** out, slong * n, slong * alloc,
                 (*n)++;
                 continue;
             }
+            nm = len - nb;
+
+            /* Walls: sectors of the region beside a chamber of the region
+               of the other kind, by plane.  */
+            if (adj == NULL)
+            {
+                adj = flint_malloc(sizeof(slong) * 2 * count);
+                plane = flint_malloc(sizeof(slong) * count);
+                mark = flint_calloc(count, sizeof(slong));
+                sector_sides(adj, plane, A);
+            }
+            stamp++;
+            for (i = lo; i < hi; i++)
+                mark[idx[i]] = stamp;
+            memset(wall, 0, sizeof(slong) * m);
+            for (i = lo; i < hi; i++)
+            {
+                slong c = idx[i], k;
+
+                if (plane[c] < 0)
+                    continue;
+                for (k = 0; k < 2; k++)
+                {
+                    slong d = adj[2 * c + k];
+
+                    if (d >= 0 && mark[d] == stamp
+                        && (member[d] != 0) != (member[c] != 0))
+                    {
+                        walls += wall[plane[c]] == 0;
+                        wall[plane[c]]++;
+                    }
+                }
+            }
+
             memset(cm, 0, sizeof(slong) * 3 * m);
             memset(cb, 0, sizeof(slong) * 3 * m);
             for (i = lo; i < hi; i++)
@@ -1110,16 +1272,17 @@ split_boxes(unsigned char ** out, slong * n, slong * alloc,
                 for (q = 0; q < m; q++)
                     c3[3 * q + s[q] + 1]++;
             }
-            nm = len - nb;
             for (q = 0; q < m; q++)
             {
                 unsigned char cand[2];
                 slong nc = 0, k;
 
+                if (walls > 0 && wall[q] == 0)
+                    continue;
                 if (T[q] == SET_ALL)
                 {
-                    cand[nc++] = 1;
-                    cand[nc++] = 3;
+                    cand[nc++] = 1;     /* {-} | {0, +} */
+                    cand[nc++] = 3;     /* {-, 0} | {+} */
                 }
                 else if (T[q] == 3)
                     cand[nc++] = 1;     /* {-} | {0} */
@@ -1173,6 +1336,10 @@ split_boxes(unsigned char ** out, slong * n, slong * alloc,
     flint_free(stack);
     flint_free(cm);
     flint_free(cb);
+    flint_free(wall);
+    flint_free(adj);
+    flint_free(plane);
+    flint_free(mark);
     flint_free(T);
 }
 
@@ -1536,4 +1703,11 @@ wc_set_from_cells(wc_set_t S, const wc_cells_t A, const int * member,
     for (i = 0; i < S->npieces; i++)
         S->interior |= S->pieces[i].dim == 3;
     return WC_OK;
+}
+
+void
+wc_set_sort(wc_set_t S)
+{
+    if (S->npieces > 1)
+        qsort(S->pieces, S->npieces, sizeof(wc_cone_struct), piece_cmp);
 }

@@ -98,6 +98,10 @@ int wc_set_contains(const wc_set_t S, const fmpq * g);
 int wc_set_from_cells(wc_set_t S, const wc_cells_t A, const int * member,
                       wc_error_t err);
 
+/* Sort S's pieces into the order wc_set_from_cells gives (after a
+   caller has changed them).  */
+void wc_set_sort(wc_set_t S);
+
 #ifdef __cplusplus
 }
 #endif

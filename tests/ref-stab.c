@@ -39,11 +39,11 @@
    The pattern rows are homogeneous in (nudot, c, t), so a solution with
    t = 1 and the strict rows (a_in > 0, +-a_it > 0, -a_in > 0) positive
    scales to one with t >= 1 and the strict rows >= 1, and back: the
-   strict inequalities are decided exactly.  A pattern with some s, l or r has a strict row on
-   a = J^T nudot, which forces nudot != 0; the pattern n..n (every touching
-   fixel n, or no touching fixel at all) asks nudot != 0 explicitly, as the
-   six LPs +-nudot_k >= 1 (again by homogeneity), M being diagonal and
-   positive.
+   strict inequalities are decided exactly.  For ref_has_motion, a pattern
+   with some s, l or r on a touching fixel has a strict row on
+   a = J^T nudot, which forces nudot != 0; the pattern n..n (every
+   touching fixel n, or no touching fixel at all) asks for nudot != 0
+   explicitly, as the six LPs +-nudot_k >= 1 (again by homogeneity).
 
    Exponential on purpose: 4^t patterns for t touching fixels.  To keep the
    tests fast, the patterns whose rows cannot hold for any wrench are
@@ -51,8 +51,12 @@
    on nudot alone (s read as a_in > 0 for motions, as a_in >= 0 for
    Table 2 strings), is a relaxation of the LP for any g, so a pattern it
    rejects is rejected for every g (for Table 2 strings this is exactly
-   "W(x) is empty", SPEC 2.3).  The memo is keyed by the whole problem
-   written out as text, so a different problem never reuses it.  */
+   "W(x) is empty", SPEC 2.3).  And for the last wrench, whether W(x)
+   with u on the near fixels holds it: ref_in_paper_union asks exactly
+   that, and ref_modes_holding needs the refinements (s or a on each near
+   fixel, subsets of it) only where it does.  The memo is keyed by the
+   whole problem written out as text, so a different problem never reuses
+   it.  */
 
 #include <stdlib.h>
 #include <string.h>
@@ -68,7 +72,6 @@
 #include <cddlib/cdd.h>
 
 #include "wrenchcone.h"
-#include "ref-lp.h"
 #include "ref-stab.h"
 
 /* ---- the model ------------------------------------------------------ */

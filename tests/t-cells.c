@@ -197,6 +197,15 @@ random_normals(fmpz_mat_t N)
             _fmpz_vec_zero(h, 3);
         else
             rand_vec(h, 5);
+        if (style == 3 && wctest_chance(1, 2))
+        {
+            /* Large entries (past the word-sized fast path of cells.c),
+               keeping the degenerate layouts: a large multiple of one
+               vector plus another.  */
+            rand_vec(r, 2);
+            _fmpz_vec_scalar_mul_si(h, h, 3, WORD(1) << 20);
+            _fmpz_vec_add(h, h, r, 3);
+        }
     }
     /* Shuffle, so that repeats are not always adjacent.  */
     for (i = n - 1; i > 0; i--)
@@ -619,6 +628,27 @@ check_cells(const wc_cells_t A, const fmpz_mat_t N)
 static slong pieces_total = 0, convex_sets = 0, convex_one = 0,
     convex_max = 0, all_one = 0, all_sets = 0;
 
+/* Piece counts by kind of set, printed with WC_CELLS_STATS set.  */
+#define NKINDS 8
+static const char * kind_name[NKINDS];
+static slong kind_sets[NKINDS], kind_pieces[NKINDS], kind_members[NKINDS];
+
+static void
+stat_add(const char * what, slong pieces, slong members)
+{
+    slong k;
+
+    for (k = 0; k < NKINDS && kind_name[k] != NULL
+         && strcmp(kind_name[k], what) != 0; k++)
+        ;
+    if (k == NKINDS)
+        return;
+    kind_name[k] = what;
+    kind_sets[k]++;
+    kind_pieces[k] += pieces;
+    kind_members[k] += members;
+}
+
 static slong
 pieces_holding(const wc_set_t S, const fmpq * g)
 {
@@ -735,6 +765,9 @@ check_set(const wc_cells_t A, const int * member, const wc_cone_struct * K,
         wctest_fail("%s: swap", what);
 
     pieces_total += S->npieces;
+    for (i = 0, c = 0; i < A->count; i++)
+        c += member[i] != 0;
+    stat_add(what, S->npieces, c);
     if (K != NULL && any)
     {
         convex_sets++;
@@ -907,6 +940,11 @@ main(void)
                "most %ld pieces; all cells: %ld of %ld in one piece\n",
                (long) pieces_total, (long) convex_sets, (long) convex_one,
                (long) convex_max, (long) all_one, (long) all_sets);
+    if (getenv("WC_CELLS_STATS") != NULL)
+        for (i = 0; i < NKINDS && kind_name[i] != NULL; i++)
+            printf("%-28s %5ld sets %8ld member cells %7ld pieces\n",
+                   kind_name[i], (long) kind_sets[i], (long) kind_members[i],
+                   (long) kind_pieces[i]);
 
     wc_cells_clear(A);
     fmpz_mat_clear(N);
