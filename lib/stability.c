@@ -1157,12 +1157,18 @@ search_modes(strlist * L, slong max, memo * M, const model * m,
              const fmpq * sol, wc_error_t err)
 {
     slong i, n = m->n;
-    const fmpq * c = sol + 3;
+    fmpq * own;
+    const fmpq * c;
     int r = 1, pass;
 
     if (max > 0 && L->len >= max)
         return 2;
     strlist_add(L, x);
+    /* sol may live in the memo, whose storage moves as it grows */
+    own = _fmpq_vec_init(3 + 2 * n);
+    qvec_set(own, sol, 3 + 2 * n);
+    sol = own;
+    c = own + 3;
     /* Unloaded fixels first (pass 0), then the loaded ones: when the list
        is capped, it fills without LPs.  */
     for (pass = 0; pass < 2; pass++)
@@ -1203,19 +1209,13 @@ search_modes(strlist * L, slong max, memo * M, const model * m,
                 fmpq_clear(nu + k);
             _fmpq_vec_clear(cc, 2 * n + 1);
             if (rr == 1)
-            {
-                /* the memo's storage may move: copy the solution */
-                fmpq * own = _fmpq_vec_init(3 + 2 * n);
-
-                qvec_set(own, s2, 3 + 2 * n);
-                rr = search_modes(L, max, M, m, y, x, i + 1, g, own, err);
-                _fmpq_vec_clear(own, 3 + 2 * n);
-            }
+                rr = search_modes(L, max, M, m, y, x, i + 1, g, s2, err);
         }
         x[i] = was;
         if (rr < 0 || rr == 2)
             r = rr;
     }
+    _fmpq_vec_clear(own, 3 + 2 * n);
     return r;
 }
 
@@ -1260,7 +1260,8 @@ classify_modes(wc_classify_t R, const model * m, slong max, wc_error_t err)
     }
     if (status == WC_OK)
     {
-        qsort(L.s, L.len, sizeof(char *), str_cmp);
+        if (L.len > 1)
+            qsort(L.s, L.len, sizeof(char *), str_cmp);
         R->modes = malloc(sizeof(char *) * (L.len + 1));
         R->nmodes = 0;
         for (i = 0; i < L.len; i++)

@@ -120,10 +120,14 @@ static void
 usage_verify(FILE * out)
 {
     fputs("Usage: " PROG " verify [OPTIONS] CERTFILE\n"
-          "Re-check a certificate written by '" PROG " feasible --certificate=FILE'\n"
-          "with GMP arithmetic alone (no FLINT, no cddlib): the constraint rows are\n"
-          "derived again from the certificate's problem and mode, then the witness\n"
-          "or the Motzkin multipliers are checked exactly.  Exit status 0 when the\n"
+          "Re-check a certificate with GMP arithmetic alone (no FLINT, no cddlib).\n"
+          "Two kinds: mode-feasibility ('" PROG " feasible --certificate=FILE'): the\n"
+          "constraint rows are derived again from the certificate's problem and\n"
+          "mode, then the witness or the Motzkin multipliers are checked exactly;\n"
+          "strong-stability ('" PROG " classify --certificate=FILE'): the static\n"
+          "forces or the separator, the motion, or -- for a strongly stable\n"
+          "wrench -- a Farkas certificate for every moving face, the set of moving\n"
+          "faces being derived again from the geometry.  Exit status 0 when the\n"
           "certificate holds, 4 when it does not, 1 when the file is malformed.\n"
           "\n"
           "Options:\n"
@@ -751,7 +755,7 @@ cmd_verify(int argc, char ** argv)
 {
     options o;
     int status, holds = 0, feasible = 0;
-    char * text = NULL, * reason = NULL, * mode = NULL;
+    char * text = NULL, * reason = NULL, * mode = NULL, * summary = NULL;
     const char * path;
     size_t len = 0;
     wc_error_t err;
@@ -767,10 +771,8 @@ cmd_verify(int argc, char ** argv)
     wc_error_init(err);
     status = read_all(&text, &len, path, MAX_CERTIFICATE_BYTES, err);
     if (status == WC_OK)
-        status = wc_verify_certificate(&holds, &reason, &mode, &feasible,
-                                       text, len,
-                                       strcmp(path, "-") == 0 ? "<stdin>" : path,
-                                       err);
+        status = wc_verify(&holds, &reason, &summary, text, len,
+                           strcmp(path, "-") == 0 ? "<stdin>" : path, err);
     if (status != WC_OK)
     {
         report(err, status);
@@ -778,9 +780,30 @@ cmd_verify(int argc, char ** argv)
     }
     if (o.fmt == FMT_JSON)
     {
-        fprintf(stdout, "{\"holds\": %s, \"mode\": ", holds ? "true" : "false");
-        wc_fprint_json_string(stdout, mode != NULL ? mode : "");
-        fprintf(stdout, ", \"feasible\": %s", feasible ? "true" : "false");
+        wc_error_t e2;
+        int h2;
+        char * r2 = NULL;
+
+        /* A mode-feasibility certificate also gives its mode and verdict
+           as keys.  */
+        wc_error_init(e2);
+        if (wc_verify_certificate(&h2, &r2, &mode, &feasible, text, len,
+                                  path, e2) != WC_OK)
+            mode = NULL;
+        free(r2);
+        wc_error_clear(e2);
+        fprintf(stdout, "{\"holds\": %s", holds ? "true" : "false");
+        if (mode != NULL)
+        {
+            fputs(", \"mode\": ", stdout);
+            wc_fprint_json_string(stdout, mode);
+            fprintf(stdout, ", \"feasible\": %s", feasible ? "true" : "false");
+        }
+        else
+        {
+            fputs(", \"summary\": ", stdout);
+            wc_fprint_json_string(stdout, summary != NULL ? summary : "");
+        }
         if (!holds)
         {
             fputs(", \"reason\": ", stdout);
@@ -789,8 +812,7 @@ cmd_verify(int argc, char ** argv)
         fputs("}\n", stdout);
     }
     else if (holds)
-        printf("certificate holds: mode %s is %s\n", mode,
-               feasible ? "feasible" : "infeasible");
+        printf("certificate holds: %s\n", summary);
     else
         printf("certificate does not hold: %s\n", reason);
     status = finish_output();
@@ -801,6 +823,7 @@ cleanup:
     free(text);
     free(reason);
     free(mode);
+    free(summary);
     wc_error_clear(err);
     return status;
 }

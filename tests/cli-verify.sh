@@ -147,6 +147,26 @@ malformed bad-feasible.json "1:56: 'feasible' must be true or false"
 malformed bad-relation.json "1:188: unknown relation '<'"
 malformed bad-pretty.json "20:11: mode has 1 letter; the problem has 2 fixels"
 
+# Strong-stability certificates (classify --certificate).
+summary() { run /dev/null verify "$certs/$1"; expect "$1" 0 "certificate holds: $2" ""; }
+summary figure5-strongly-stable.json "wrench (0, -1, 0) is strongly stable: 9 moving faces excluded"
+summary figure5-near-strongly-stable.json "wrench (0, -1, 0) is strongly stable: 5 moving faces excluded"
+summary figure5-near-not-weakly-stable.json "wrench (0, 1, 0) is not weakly stable"
+summary figure5-kinetic-moves.json "wrench (-1, -1, -1) is weakly stable but moves in mode ls"
+tampered tampered-face-missing.json "the faces omit the moving face rr"
+tampered tampered-face-repeated.json "face 7 (ss) repeats face 1"
+tampered tampered-face-sign.json "face 2 (ln) is not a moving face of the problem"
+tampered tampered-face-multiplier.json "face 1 (ss): the multipliers combine the rows to (0, 0, 0, 1), not to zero"
+tampered tampered-face-multiplier-count.json "face 4 (sn): there are 8 multipliers for 9 rows"
+tampered tampered-rotation-missing.json "the faces omit the moving face nu, rotation -1"
+tampered tampered-kinetic-friction.json "the motion's letter l at fixel 1 needs c_1t = -mu_k c_1n = -1, but c_1t = -1/2"
+tampered tampered-separator.json "the separator y = (0, 1, 2) has y . (J_1n + mu_s J_1t) = -1, not >= 0"
+tampered tampered-static-forces.json "the static force at fixel 1 leaves its friction cone: |c_1t| = 2 > mu_s c_1n = 1"
+malformed bad-sign-letter.json "12:13: letter 'u' not allowed on fixel 2, which is touching"
+malformed bad-rotation.json "1:435: a rotation face has the sign n..n"
+malformed bad-mass.json "1:50: 'mass' must be positive"
+malformed bad-missing-faces.json "1:1: missing key 'faces'"
+
 # Inputs no certificate writer makes: a NUL byte, deep nesting, 10 MB of
 # repeated garbage, 4 MB of a valid JSON array.
 printf '{"mode": "ss"\000}' >"$tmp/nul.json"
