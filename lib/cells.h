@@ -15,12 +15,15 @@
    Every NNC cone whose facet normals and equalities are among the planes
    is a union of cells; so are unions, intersections and complements of
    such cones.  A set is reported as a list of pieces: pairwise disjoint
-   convex NNC cones in canonical form (wc_cone_t), obtained by merging
-   cells.  A piece is a "sign box": the points whose sign for each plane p
-   lies in a set A_p that is one of {-}, {0}, {+}, {-,0}, {0,+} or
-   {-,0,+} -- a convex NNC cone.  Two boxes that differ in one plane only,
-   where the union of their two sign sets is again one of those six, merge
-   into one box.  */
+   convex NNC cones in canonical form (wc_cone_t).  A piece is a "sign
+   box": the points whose sign for each plane p lies in a set A_p that is
+   one of {-}, {0}, {+}, {-,0}, {0,+} or {-,0,+} -- a convex NNC cone.
+   The boxes come top-down: the tightest box holding the member cells is a
+   piece when it holds no other cell, else it is split along a plane where
+   a member cell meets a non-member one; then two boxes that differ in one
+   plane only, where the union of their sign sets is again one of the six,
+   merge.  Every box is exactly the union of the member cells it holds.  A
+   convex cone's cells come out as one piece.  */
 
 #ifndef WC_CELLS_H
 #define WC_CELLS_H
@@ -89,12 +92,12 @@ void wc_set_swap(wc_set_t S, wc_set_t T);
 /* 1 when g (3 entries) lies in some piece of S, else 0.  */
 int wc_set_contains(const wc_set_t S, const fmpq * g);
 
-/* S := the union of the cells i of A with member[i] != 0, merged into
-   sign boxes as described above, each converted to its canonical NNC
-   cone.  Pieces are sorted by decreasing dimension, then by their
-   canonical form (rays, then inequalities, then equalities, then included
-   faces, compared entry by entry), so the output depends only on A and
-   member.  Returns WC_OK or WC_EINTERNAL (err set; S left empty).  */
+/* S := the union of the cells i of A with member[i] != 0, as sign boxes
+   (above), each converted to its canonical NNC cone.  Pieces are sorted
+   by decreasing dimension, then by their canonical form (rays, then
+   inequalities, then equalities, then included faces, compared entry by
+   entry), so the output depends only on A and member.  Returns WC_OK or
+   WC_EINTERNAL (err set; S left empty).  */
 int wc_set_from_cells(wc_set_t S, const wc_cells_t A, const int * member,
                       wc_error_t err);
 
