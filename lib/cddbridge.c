@@ -22,6 +22,7 @@
 #include <cddlib/setoper.h>
 #include <cddlib/cdd.h>
 #include <flint/fmpq.h>
+#include <flint/fmpq_vec.h>
 
 #include "wrenchcone.h"
 #include "cddbridge.h"
@@ -241,70 +242,6 @@ cleanup:
 }
 
 int
-_wc_cdd_lp_point(fmpq * x, const fmpq_mat_t A, const fmpq * b,
-                 const int * eq, wc_error_t err)
-{
-    slong m = fmpq_mat_nrows(A), nv = fmpq_mat_ncols(A), i, j;
-    dd_MatrixPtr M = NULL;
-    dd_LPPtr lp = NULL;
-    dd_ErrorType e = dd_NoError;
-    int res = -1;
-
-    wc_init();
-    M = dd_CreateMatrix(m, nv + 1);
-    if (M == NULL)
-    {
-        cdd_fail(err, "dd_CreateMatrix", e);
-        goto cleanup;
-    }
-    /* Row (-b_i, A_i): -b_i + A_i . x >= 0.  */
-    M->representation = dd_Inequality;
-    M->numbtype = dd_Rational;
-    M->objective = dd_LPmax;
-    for (i = 0; i < m; i++)
-    {
-        fmpq_get_mpq(M->matrix[i][0], b + i);
-        mpq_neg(M->matrix[i][0], M->matrix[i][0]);
-        for (j = 0; j < nv; j++)
-            fmpq_get_mpq(M->matrix[i][j + 1], fmpq_mat_entry(A, i, j));
-        if (eq[i])
-            set_addelem(M->linset, i + 1);
-    }
-    for (j = 0; j <= nv; j++)
-        mpq_set_ui(M->rowvec[j], 0, 1);
-    lp = dd_Matrix2LP(M, &e);
-    if (lp == NULL || e != dd_NoError)
-    {
-        cdd_fail(err, "dd_Matrix2LP", e);
-        goto cleanup;
-    }
-    if (!dd_LPSolve(lp, dd_DualSimplex, &e) || e != dd_NoError)
-    {
-        cdd_fail(err, "dd_LPSolve", e);
-        goto cleanup;
-    }
-    if (lp->LPS == dd_Optimal)
-    {
-        /* sol[0] is cddlib's homogenising coordinate.  */
-        for (j = 0; j < nv; j++)
-            fmpq_set_mpq(x + j, lp->sol[j + 1]);
-        res = 1;
-    }
-    else if (lp->LPS == dd_Inconsistent)
-        res = 0;
-    else
-        wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                     "cddlib LP ended with status %d", (int) lp->LPS);
-
-cleanup:
-    if (lp != NULL)
-        dd_FreeLPData(lp);
-    if (M != NULL)
-        dd_FreeMatrix(M);
-    return res;
-}
-
-int
 _wc_cdd_lp_min(fmpq * x, fmpq_t val, const fmpq_mat_t A, const fmpq * b,
                const int * eq, const fmpq * c, wc_error_t err)
 {
@@ -367,6 +304,26 @@ cleanup:
         dd_FreeLPData(lp);
     if (M != NULL)
         dd_FreeMatrix(M);
+    return res;
+}
+
+int
+_wc_cdd_lp_point(fmpq * x, const fmpq_mat_t A, const fmpq * b,
+                 const int * eq, wc_error_t err)
+{
+    slong nv = fmpq_mat_ncols(A);
+    fmpq * c = _fmpq_vec_init(nv + 1);
+    fmpq_t val;
+    int res;
+
+    /* A zero objective: any feasible basic point is optimal.  */
+    fmpq_init(val);
+    res = _wc_cdd_lp_min(x, val, A, b, eq, c, err);
+    if (res == 2)
+        res = (wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "cddlib: a zero "
+                            "objective reported unbounded"), -1);
+    fmpq_clear(val);
+    _fmpq_vec_clear(c, nv + 1);
     return res;
 }
 

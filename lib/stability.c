@@ -59,6 +59,21 @@ qvec_set(fmpq * v, const fmpq * w, slong len)
         fmpq_set(v + i, w + i);
 }
 
+/* Keep the first r rows of A.  */
+static void
+shrink(fmpq_mat_t A, slong r)
+{
+    fmpq_mat_t B;
+    slong i, k;
+
+    fmpq_mat_init(B, r, fmpq_mat_ncols(A));
+    for (i = 0; i < r; i++)
+        for (k = 0; k < fmpq_mat_ncols(A); k++)
+            fmpq_set(fmpq_mat_entry(B, i, k), fmpq_mat_entry(A, i, k));
+    fmpq_mat_swap(A, B);
+    fmpq_mat_clear(B);
+}
+
 static int
 qvec_is_zero(const fmpq * v, slong len)
 {
@@ -644,17 +659,7 @@ facesys_init(facesys * s, const model * m, const char * y, const char * x,
     fmpq_one(fmpq_mat_entry(s->A, s->rows, nv - 1));
     s->rel[s->rows++] = WC_REL_GT;
 
-    /* shrink A to the rows used */
-    {
-        fmpq_mat_t B;
-
-        fmpq_mat_init(B, s->rows, nv);
-        for (i = 0; i < s->rows; i++)
-            for (j = 0; j < nv; j++)
-                fmpq_set(fmpq_mat_entry(B, i, j), fmpq_mat_entry(s->A, i, j));
-        fmpq_mat_swap(B, s->A);
-        fmpq_mat_clear(B);
-    }
+    shrink(s->A, s->rows);
     _fmpq_vec_clear(w, 3);
     for (j = 0; j < 4; j++)
         fmpq_clear(ed + j);
@@ -1477,110 +1482,6 @@ cleanup:
 }
 
 /* ---------------------------------------------------------------------
-   The certificate (verify.h, kind "strong-stability").  */
-
-static void
-json_q(FILE * out, const fmpq_t x)
-{
-    fputc('"', out);
-    wc_fprint_fmpq(out, x);
-    fputc('"', out);
-}
-
-static void
-json_qvec(FILE * out, const fmpq * v, slong len)
-{
-    slong i;
-
-    fputc('[', out);
-    for (i = 0; i < len; i++)
-    {
-        if (i > 0)
-            fputs(", ", out);
-        json_q(out, v + i);
-    }
-    fputc(']', out);
-}
-
-int
-wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
-                               const wc_classify_t R)
-{
-    slong i;
-
-    fputs("{\"kind\": \"strong-stability\",\n \"problem\": {\"mass\": ", out);
-    json_q(out, P->mass);
-    fputs(", \"inertia\": ", out);
-    json_q(out, P->inertia);
-    fputs(", \"com\": ", out);
-    json_qvec(out, P->com, 2);
-    fputs(",\n  \"fixels\": [", out);
-    for (i = 0; i < P->n; i++)
-    {
-        const wc_fixel_struct * f = P->fixels + i;
-
-        fputs(i > 0 ? ",\n   " : "\n   ", out);
-        fputs("{\"point\": ", out);
-        json_qvec(out, f->point, 2);
-        fputs(", \"normal\": ", out);
-        json_qvec(out, f->normal, 2);
-        fprintf(out, ", \"state\": \"%s\", \"mu_s\": ",
-                f->state == WC_TOUCHING ? "touching" : "near");
-        json_q(out, f->mu_s);
-        fputs(", \"mu_k\": ", out);
-        json_q(out, f->mu_k);
-        fputc('}', out);
-    }
-    fputs("]},\n \"wrench\": ", out);
-    json_qvec(out, R->g, 3);
-    fprintf(out, ",\n \"weakly_stable\": %s,\n \"weak\": ",
-            R->weak ? "true" : "false");
-    if (R->weak)
-    {
-        fputs("{\"c\": ", out);
-        json_qvec(out, R->weak_c, 2 * R->n);
-    }
-    else
-    {
-        fputs("{\"separator\": ", out);
-        json_qvec(out, R->weak_sep, 3);
-    }
-    fprintf(out, "},\n \"strongly_stable\": %s", R->strong ? "true" : "false");
-    if (R->weak && !R->strong)
-    {
-        const wc_motion_struct * a = R->motions + 0;
-
-        fputs(",\n \"motion\": {\"sign\": ", out);
-        wc_fprint_json_string(out, a->sign);
-        fputs(", \"nudot\": ", out);
-        json_qvec(out, a->nudot, 3);
-        fputs(", \"c\": ", out);
-        json_qvec(out, a->c, 2 * R->n);
-        fputc('}', out);
-    }
-    if (R->strong)
-    {
-        fputs(",\n \"faces\": [", out);
-        for (i = 0; i < R->nnofaces; i++)
-        {
-            const wc_noface_struct * f = R->nofaces + i;
-
-            fputs(i > 0 ? ",\n   " : "\n   ", out);
-            fputs("{\"sign\": ", out);
-            wc_fprint_json_string(out, f->sign);
-            if (f->rotation != 0)
-                fprintf(out, ", \"rotation\": %d", f->rotation);
-            fputs(", \"multipliers\": ", out);
-            json_qvec(out, f->mult, f->nmult);
-            fputc('}', out);
-        }
-        fputc(']', out);
-    }
-    fputs("}\n", out);
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
-}
-
-/* ---------------------------------------------------------------------
    The sets.  */
 
 void
@@ -1655,16 +1556,7 @@ edge_rows(fmpq_mat_t Q, const model * m, const char * x, slong skip)
                 fmpq_neg(fmpq_mat_entry(Q, e, k), w + k);
         }
     }
-    {
-        fmpq_mat_t B;
-
-        fmpq_mat_init(B, e, 3);
-        for (i = 0; i < e; i++)
-            for (k = 0; k < 3; k++)
-                fmpq_set(fmpq_mat_entry(B, i, k), fmpq_mat_entry(Q, i, k));
-        fmpq_mat_swap(B, Q);
-        fmpq_mat_clear(B);
-    }
+    shrink(Q, e);
     for (j = 0; j < 4; j++)
         fmpq_clear(ed + j);
     for (k = 0; k < 3; k++)
@@ -1682,20 +1574,6 @@ append_row(fmpq_mat_t A, slong * r, const fmpq * v, int neg)
         else
             fmpq_set(fmpq_mat_entry(A, *r, k), v + k);
     (*r)++;
-}
-
-static void
-shrink(fmpq_mat_t A, slong r)
-{
-    fmpq_mat_t B;
-    slong i, k;
-
-    fmpq_mat_init(B, r, fmpq_mat_ncols(A));
-    for (i = 0; i < r; i++)
-        for (k = 0; k < fmpq_mat_ncols(A); k++)
-            fmpq_set(fmpq_mat_entry(B, i, k), fmpq_mat_entry(A, i, k));
-    fmpq_mat_swap(A, B);
-    fmpq_mat_clear(B);
 }
 
 /* W := M V + (-J) D for the face y (rot: rotation face; y = NULL with

@@ -54,6 +54,15 @@ zvec(FILE * out, const fmpz * v, slong len, int json)
     putc(json ? ']' : ')', out);
 }
 
+/* A rational as a JSON string.  */
+static void
+jq(FILE * out, const fmpq_t x)
+{
+    putc('"', out);
+    wc_fprint_fmpq(out, x);
+    putc('"', out);
+}
+
 static const char *
 yes(int b)
 {
@@ -380,3 +389,83 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
     }
     return done(out);
 }
+
+/* The certificate (verify.h, kind "strong-stability").  */
+int
+wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
+                               const wc_classify_t R)
+{
+    slong i;
+
+    fputs("{\"kind\": \"strong-stability\",\n \"problem\": {\"mass\": ", out);
+    jq(out, P->mass);
+    fputs(", \"inertia\": ", out);
+    jq(out, P->inertia);
+    fputs(", \"com\": ", out);
+    qvec(out, P->com, 2, 1);
+    fputs(",\n  \"fixels\": [", out);
+    for (i = 0; i < P->n; i++)
+    {
+        const wc_fixel_struct * f = P->fixels + i;
+
+        fputs(i > 0 ? ",\n   " : "\n   ", out);
+        fputs("{\"point\": ", out);
+        qvec(out, f->point, 2, 1);
+        fputs(", \"normal\": ", out);
+        qvec(out, f->normal, 2, 1);
+        fprintf(out, ", \"state\": \"%s\", \"mu_s\": ",
+                f->state == WC_TOUCHING ? "touching" : "near");
+        jq(out, f->mu_s);
+        fputs(", \"mu_k\": ", out);
+        jq(out, f->mu_k);
+        fputc('}', out);
+    }
+    fputs("]},\n \"wrench\": ", out);
+    qvec(out, R->g, 3, 1);
+    fprintf(out, ",\n \"weakly_stable\": %s,\n \"weak\": ",
+            R->weak ? "true" : "false");
+    if (R->weak)
+    {
+        fputs("{\"c\": ", out);
+        qvec(out, R->weak_c, 2 * R->n, 1);
+    }
+    else
+    {
+        fputs("{\"separator\": ", out);
+        qvec(out, R->weak_sep, 3, 1);
+    }
+    fprintf(out, "},\n \"strongly_stable\": %s", R->strong ? "true" : "false");
+    if (R->weak && !R->strong)
+    {
+        const wc_motion_struct * a = R->motions + 0;
+
+        fputs(",\n \"motion\": {\"sign\": ", out);
+        wc_fprint_json_string(out, a->sign);
+        fputs(", \"nudot\": ", out);
+        qvec(out, a->nudot, 3, 1);
+        fputs(", \"c\": ", out);
+        qvec(out, a->c, 2 * R->n, 1);
+        fputc('}', out);
+    }
+    if (R->strong)
+    {
+        fputs(",\n \"faces\": [", out);
+        for (i = 0; i < R->nnofaces; i++)
+        {
+            const wc_noface_struct * f = R->nofaces + i;
+
+            fputs(i > 0 ? ",\n   " : "\n   ", out);
+            fputs("{\"sign\": ", out);
+            wc_fprint_json_string(out, f->sign);
+            if (f->rotation != 0)
+                fprintf(out, ", \"rotation\": %d", f->rotation);
+            fputs(", \"multipliers\": ", out);
+            qvec(out, f->mult, f->nmult, 1);
+            fputc('}', out);
+        }
+        fputc(']', out);
+    }
+    fputs("}\n", out);
+    return ferror(out) ? WC_EINTERNAL : WC_OK;
+}
+

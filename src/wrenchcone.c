@@ -689,6 +689,57 @@ cmd_modes(int argc, char ** argv)
     return status;
 }
 
+/* Write a certificate to path with put(f, data): no partial file is
+   left, but only a file this run created is ever removed -- never a
+   device or someone's file.  */
+static int
+write_certificate(const char * path, int (*put)(FILE *, const void *),
+                  const void * data)
+{
+    struct stat st;
+    int existed = stat(path, &st) == 0;
+    FILE * f = fopen(path, "w");
+    int bad = f == NULL;
+
+    if (f != NULL)
+    {
+        bad = put(f, data) != WC_OK;
+        bad |= fclose(f) != 0;
+        if (bad && !existed)
+            remove(path);
+    }
+    if (bad)
+    {
+        fprintf(stderr, PROG ": %s: cannot write the certificate: %s\n",
+                path, strerror(errno));
+        return WC_EINTERNAL;
+    }
+    return WC_OK;
+}
+
+typedef struct
+{
+    const wc_problem_struct * P;
+    const void * C;
+}
+cert_job;
+
+static int
+put_feasibility(FILE * f, const void * p)
+{
+    const cert_job * j = p;
+
+    return wc_certificate_fprint(f, j->C, j->P, 1);
+}
+
+static int
+put_stability(FILE * f, const void * p)
+{
+    const cert_job * j = p;
+
+    return wc_classify_certificate_fprint(f, j->P, j->C);
+}
+
 static int
 cmd_feasible(int argc, char ** argv)
 {
@@ -718,27 +769,11 @@ cmd_feasible(int argc, char ** argv)
     }
     if (o.certificate != NULL)
     {
-        struct stat st;
-        int existed = stat(o.certificate, &st) == 0;
-        FILE * f = fopen(o.certificate, "w");
-        int bad = f == NULL;
+        cert_job j = { P, C };
 
-        if (f != NULL)
-        {
-            bad = wc_certificate_fprint(f, C, P, 1) != WC_OK;
-            bad |= fclose(f) != 0;
-            /* No partial certificate -- but remove only a file this run
-               created, never a device or someone's file.  */
-            if (bad && !existed)
-                remove(o.certificate);
-        }
-        if (bad)
-        {
-            fprintf(stderr, PROG ": %s: cannot write the certificate: %s\n",
-                    o.certificate, strerror(errno));
-            status = WC_EINTERNAL;
+        if ((status = write_certificate(o.certificate, put_feasibility, &j))
+            != WC_OK)
             goto cleanup;
-        }
     }
     wc_certificate_fprint(stdout, C, P, o.fmt == FMT_JSON);
     status = finish_output();
@@ -1115,33 +1150,6 @@ parse_numbers(fmpq * v, char ** args, slong k, const char * what,
     return WC_OK;
 }
 
-/* Write a certificate to path: no partial file is left, but only a file
-   this run created is ever removed.  */
-static int
-write_certificate(const char * path, const wc_problem_t P,
-                  const wc_classify_t R)
-{
-    struct stat st;
-    int existed = stat(path, &st) == 0;
-    FILE * f = fopen(path, "w");
-    int bad = f == NULL;
-
-    if (f != NULL)
-    {
-        bad = wc_classify_certificate_fprint(f, P, R) != WC_OK;
-        bad |= fclose(f) != 0;
-        if (bad && !existed)
-            remove(path);
-    }
-    if (bad)
-    {
-        fprintf(stderr, PROG ": %s: cannot write the certificate: %s\n",
-                path, strerror(errno));
-        return WC_EINTERNAL;
-    }
-    return WC_OK;
-}
-
 static int
 cmd_classify(int argc, char ** argv)
 {
@@ -1177,9 +1185,14 @@ cmd_classify(int argc, char ** argv)
         report(err, status);
         goto cleanup;
     }
-    if (o.certificate != NULL
-        && (status = write_certificate(o.certificate, P, R)) != WC_OK)
-        goto cleanup;
+    if (o.certificate != NULL)
+    {
+        cert_job j = { P, R };
+
+        if ((status = write_certificate(o.certificate, put_stability, &j))
+            != WC_OK)
+            goto cleanup;
+    }
     wc_classify_fprint(stdout, R, o.fmt == FMT_JSON);
     status = finish_output();
 
