@@ -101,6 +101,13 @@ int wc_set_contains(const wc_set_t S, const fmpq * g);
 int wc_set_from_cells(wc_set_t S, const wc_cells_t A, const int * member,
                       wc_error_t err);
 
+/* Merge pieces of S whose union is a convex NNC cone, until none is (the
+   sign boxes of wc_set_from_cells follow every plane of A, also where the
+   set does not change across it).  A must be the arrangement S was built
+   from.  The pieces stay pairwise disjoint with the same union, sorted as
+   wc_set_from_cells sorts them.  Returns WC_OK or WC_EINTERNAL.  */
+int wc_set_merge(wc_set_t S, const wc_cells_t A, wc_error_t err);
+
 /* Sort S's pieces into the order wc_set_from_cells gives (after a
    caller has changed them).  */
 void wc_set_sort(wc_set_t S);

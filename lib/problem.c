@@ -210,6 +210,62 @@ wc_problem_add_fixel(wc_problem_t P)
     return f;
 }
 
+int
+wc_problem_set(wc_problem_t Q, const wc_problem_t P)
+{
+    slong i;
+
+    if (Q == P)
+        return WC_OK;
+    wc_problem_clear(Q);
+    wc_problem_init(Q);
+    if ((P->file != NULL && (Q->file = dup_string(P->file)) == NULL)
+        || (P->name != NULL && (Q->name = dup_string(P->name)) == NULL))
+        goto oom;
+    fmpq_set(Q->mass, P->mass);
+    fmpq_set(Q->inertia, P->inertia);
+    fmpq_set(Q->com + 0, P->com + 0);
+    fmpq_set(Q->com + 1, P->com + 1);
+    fmpq_set(Q->mu_s, P->mu_s);
+    fmpq_set(Q->mu_k, P->mu_k);
+    Q->shape = P->shape;
+    Q->shape_line = P->shape_line;
+    if (P->shape_len > 0)
+    {
+        if ((Q->shape_data = malloc(sizeof(fmpq) * P->shape_len)) == NULL)
+            goto oom;
+        for (i = 0; i < P->shape_len; i++)
+        {
+            fmpq_init(Q->shape_data + i);
+            fmpq_set(Q->shape_data + i, P->shape_data + i);
+        }
+        Q->shape_len = P->shape_len;
+    }
+    for (i = 0; i < P->n; i++)
+    {
+        const wc_fixel_struct * f = P->fixels + i;
+        wc_fixel_struct * g = wc_problem_add_fixel(Q);
+
+        if (g == NULL)
+            goto oom;
+        fmpq_set(g->point + 0, f->point + 0);
+        fmpq_set(g->point + 1, f->point + 1);
+        fmpq_set(g->normal + 0, f->normal + 0);
+        fmpq_set(g->normal + 1, f->normal + 1);
+        fmpq_set(g->mu_s, f->mu_s);
+        fmpq_set(g->mu_k, f->mu_k);
+        g->state = f->state;
+        g->line = f->line;
+        g->col = f->col;
+    }
+    return WC_OK;
+
+oom:
+    wc_problem_clear(Q);
+    wc_problem_init(Q);
+    return WC_EINTERNAL;
+}
+
 /* ------------------------------------------------------------------ */
 /* Numbers.                                                            */
 

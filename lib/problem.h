@@ -83,6 +83,10 @@ int wc_problem_parse(wc_problem_t P, const char * text, size_t len,
    (tests, generators).  */
 wc_fixel_struct * wc_problem_add_fixel(wc_problem_t P);
 
+/* Q := a copy of P (Q initialised; P may be Q).  Returns WC_OK, or
+   WC_EINTERNAL when out of memory (Q is then left empty).  */
+int wc_problem_set(wc_problem_t Q, const wc_problem_t P);
+
 /* Write P as a .wc problem file that wc_problem_parse reads back to the
    same problem (every fixel with its normal, state and friction written
    out).  Returns WC_OK or WC_EINTERNAL on a write error.  */

@@ -1750,133 +1750,6 @@ collect_planes(fmpz_mat_t A, slong * r, const wc_cone_t C)
     fmpz_mat_clear(B);
 }
 
-/* Merge pieces of S whose union is convex, until none is: the pieces
-   from sign boxes follow every plane of the arrangement, also where the
-   set does not change across it.  P_i u P_j is a convex NNC cone N iff
-   (i) every facet of H = cl conv (P_i u P_j) lies on a plane of the
-   arrangement (so every cell is inside H or outside it), (ii) the faces of
-   H whose relative-interior point lies in P_i u P_j form an up-set (then
-   N, those faces' union, is a convex NNC cone), and (iii) every cell lies
-   in N iff it lies in P_i u P_j (both are unions of cells).  Then N
-   replaces the two; the pieces stay pairwise disjoint with the same
-   union.  */
-static int
-try_merge(wc_cone_t N, const wc_cone_t A, const wc_cone_t B,
-          const wc_cells_t cells, int * ok, wc_error_t err)
-{
-    slong ra = fmpz_mat_nrows(A->rays), rb = fmpz_mat_nrows(B->rays);
-    slong la = fmpz_mat_nrows(A->lines), lb = fmpz_mat_nrows(B->lines);
-    slong i, j, k, f;
-    fmpq_mat_t R, L;
-    fmpq g[3];
-    int status;
-
-    *ok = 0;
-    fmpq_mat_init(R, ra + rb, 3);
-    fmpq_mat_init(L, la + lb, 3);
-    for (i = 0; i < ra + rb; i++)
-        for (k = 0; k < 3; k++)
-            fmpq_set_fmpz(fmpq_mat_entry(R, i, k), i < ra
-                          ? fmpz_mat_entry(A->rays, i, k)
-                          : fmpz_mat_entry(B->rays, i - ra, k));
-    for (i = 0; i < la + lb; i++)
-        for (k = 0; k < 3; k++)
-            fmpq_set_fmpz(fmpq_mat_entry(L, i, k), i < la
-                          ? fmpz_mat_entry(A->lines, i, k)
-                          : fmpz_mat_entry(B->lines, i - la, k));
-    status = wc_cone_set_generators(N, R, L, err);
-    fmpq_mat_clear(R);
-    fmpq_mat_clear(L);
-    if (status != WC_OK)
-        return status;
-    for (i = 0; i < fmpz_mat_nrows(N->ineqs); i++)
-        if (wc_cells_plane_index(cells, N->ineqs->rows[i]) < 0)
-            return WC_OK;
-    for (k = 0; k < 3; k++)
-        fmpq_init(g + k);
-    for (f = 0; f < N->nfaces; f++)
-    {
-        const wc_face_struct * F = N->faces + f;
-
-        for (k = 0; k < 3; k++)
-        {
-            fmpq_zero(g + k);
-            for (j = 0; j < F->nrays; j++)
-                fmpq_add_fmpz(g + k, g + k,
-                              fmpz_mat_entry(N->rays, F->rays[j], k));
-        }
-        N->faces[f].included = wc_cone_contains(A, g) || wc_cone_contains(B, g);
-    }
-    *ok = 1;
-    /* an up-set: no excluded face above an included one */
-    for (f = 0; f < N->nfaces && *ok; f++)
-    {
-        slong h;
-
-        if (!N->faces[f].included)
-            continue;
-        for (h = 0; h < N->nfaces && *ok; h++)
-        {
-            const wc_face_struct * F = N->faces + f, * G = N->faces + h;
-            slong a = 0, b = 0;
-
-            if (G->included || G->dim <= F->dim)
-                continue;
-            while (a < F->nrays && b < G->nrays)
-            {
-                if (F->rays[a] == G->rays[b])
-                    a++;
-                b++;
-            }
-            if (a == F->nrays)
-                *ok = 0;
-        }
-    }
-    for (i = 0; i < cells->count && *ok; i++)
-    {
-        for (k = 0; k < 3; k++)
-            fmpq_set_fmpz(g + k, fmpz_mat_entry(cells->point, i, k));
-        *ok = wc_cone_contains(N, g)
-            == (wc_cone_contains(A, g) || wc_cone_contains(B, g));
-    }
-    for (k = 0; k < 3; k++)
-        fmpq_clear(g + k);
-    return WC_OK;
-}
-
-static int
-merge_pieces(wc_set_t S, const wc_cells_t cells, wc_error_t err)
-{
-    int changed = 1, ok, status = WC_OK;
-    slong i, j;
-    wc_cone_t N;
-
-    wc_cone_init(N, 3);
-    while (changed && status == WC_OK)
-    {
-        changed = 0;
-        for (i = 0; i < S->npieces && status == WC_OK; i++)
-            for (j = i + 1; j < S->npieces && status == WC_OK; j++)
-            {
-                status = try_merge(N, S->pieces + i, S->pieces + j, cells,
-                                   &ok, err);
-                if (status != WC_OK || !ok)
-                    continue;
-                wc_cone_swap(S->pieces + i, N);
-                wc_cone_clear(S->pieces + j);
-                memmove(S->pieces + j, S->pieces + j + 1,
-                        sizeof(wc_cone_struct) * (S->npieces - j - 1));
-                S->npieces--;
-                changed = 1;
-                j = i;      /* piece i grew: try it against all again */
-            }
-    }
-    wc_cone_clear(N);
-    if (status == WC_OK)
-        wc_set_sort(S);
-    return status;
-}
-
 int
 wc_stability(wc_stability_t S, const wc_problem_t P, wc_error_t err)
 {
@@ -1995,8 +1868,8 @@ wc_stability(wc_stability_t S, const wc_problem_t P, wc_error_t err)
         != WC_OK
         || (status = wc_set_from_cells(S->strong_paper, S->cells, in_paper,
                                        err)) != WC_OK
-        || (status = merge_pieces(S->strong, S->cells, err)) != WC_OK
-        || (status = merge_pieces(S->strong_paper, S->cells, err)) != WC_OK)
+        || (status = wc_set_merge(S->strong, S->cells, err)) != WC_OK
+        || (status = wc_set_merge(S->strong_paper, S->cells, err)) != WC_OK)
         goto cleanup;
 
     /* Push regions.  */

@@ -27,6 +27,7 @@
 #include "cells.h"
 #include "push.h"
 #include "stability.h"
+#include "plan.h"
 
 #ifdef __cplusplus
 extern "C" {

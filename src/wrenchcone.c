@@ -40,6 +40,11 @@ usage(FILE * out)
           "                         paper semantics), motions, the modes holding it\n"
           "  stability PROBLEM      the weakly and strongly stable wrench sets, exactly,\n"
           "                         and where a frictionless finger may push\n"
+          "  plan PROBLEM [FX FY TAU]\n"
+          "                         a sensorless insertion plan: the wrenches that seat\n"
+          "                         the part from any contact state (G_goal), exactly;\n"
+          "                         with a wrench, its verdict\n"
+          "  sweep PROBLEM          G_goal against friction: --friction=LIST, --critical\n"
           "  verify CERTFILE        re-check a certificate with GMP arithmetic alone\n"
           "  compare PROBLEM MODE FILE\n"
           "                         check a cone computed elsewhere (FILE: cdd or JSON,\n"
@@ -239,6 +244,55 @@ usage_stability(FILE * out)
 }
 
 static void
+usage_plan(FILE * out)
+{
+    fputs("Usage: " PROG " plan [OPTIONS] PROBLEM [FX FY TAU]\n"
+          "The sensorless insertion plan of paper Sections 8 and 9 for all fixels of\n"
+          "PROBLEM (their touching/near states are ignored: every contact state is\n"
+          "considered).  For every state S and nonempty L in S the string s on L,\n"
+          "m on S \\ L, u off S; for every S but the goal, m on S, s off S.  Prints\n"
+          "the strings of each state (Table 5), which are redundant syntactically and\n"
+          "exactly, the goal set G_goal (the complement of the union of their cones)\n"
+          "as pairwise disjoint NNC cones, whether G_goal lies in the goal state's\n"
+          "strongly stable set (eq. 25, both semantics), and with a shape where a\n"
+          "frictionless finger may push.  With a wrench FX FY TAU: whether it is in\n"
+          "G_goal and which needed strings hold it.\n"
+          "\n"
+          "Options:\n"
+          "  --complete       also the complete plan (beyond the paper): accept a\n"
+          "                   wrench when every transition graph it allows is acyclic\n"
+          "                   with the goal as its only sink (wrenchcone(1) states the\n"
+          "                   transition model); as a set, or for the wrench given,\n"
+          "                   with its transitions.  At most 6 fixels\n"
+          "  --format=FMT     text (default) or json\n"
+          "  -h, --help       print this help and exit\n"
+          "  -V, --version    print versions and exit\n", out);
+}
+
+static void
+usage_sweep(FILE * out)
+{
+    fputs("Usage: " PROG " sweep [OPTIONS] PROBLEM\n"
+          "G_goal of the insertion plan against the friction coefficient, with\n"
+          "mu_s = mu_k = mu at every fixel.  G_goal shrinks as mu grows.\n"
+          "\n"
+          "Options (at least one of --friction and --critical):\n"
+          "  --friction=LIST  the plan for each value of the comma-separated list of\n"
+          "                   exact numbers: the pieces of G_goal, the needed strings,\n"
+          "                   eq. 25, and with a shape the pushing region and its\n"
+          "                   length (approximate, for reading)\n"
+          "  --critical       an exact bracket [lo, hi] of the friction at which G_goal\n"
+          "                   becomes empty: nonempty at lo (with a wrench in it),\n"
+          "                   empty at hi (with the strings whose cones cover R^3)\n"
+          "  --width=W        the bracket's largest width (default 1/1000)\n"
+          "  --max-friction=M give up above M (default 1024): G_goal is then\n"
+          "                   nonempty at every mu <= M\n"
+          "  --format=FMT     text (default) or json\n"
+          "  -h, --help       print this help and exit\n"
+          "  -V, --version    print versions and exit\n", out);
+}
+
+static void
 version(void)
 {
     printf(PROG " %s\n"
@@ -379,12 +433,13 @@ finish_output(void)
 }
 
 enum { OPT_FORMAT = 256, OPT_METHOD, OPT_TRACE, OPT_WITNESS, OPT_CERT,
-       OPT_ARITH, OPT_BIAS, OPT_LENGTH, OPT_MAXMODES };
+       OPT_ARITH, OPT_BIAS, OPT_LENGTH, OPT_MAXMODES, OPT_COMPLETE,
+       OPT_FRICTION, OPT_CRITICAL, OPT_WIDTH, OPT_MAXFRICTION };
 
 /* Which options a command takes, beyond --format, --help, --version.  */
 enum { TAKES_CDD = 1, TAKES_METHOD = 2, TAKES_TRACE = 4, TAKES_WITNESS = 8,
        TAKES_CERT = 16, TAKES_ARITH = 32, TAKES_BIAS = 64,
-       TAKES_MAXMODES = 128 };
+       TAKES_MAXMODES = 128, TAKES_COMPLETE = 256, TAKES_SWEEP = 512 };
 
 typedef struct
 {
@@ -397,6 +452,11 @@ typedef struct
     const char * bias;  /* --bias=FX,FY,TAU */
     const char * length;    /* --length=L */
     long max_modes;     /* --max-modes=N */
+    int complete;       /* --complete */
+    const char * friction;  /* --friction=LIST */
+    int critical;       /* --critical */
+    const char * width;     /* --width=W */
+    const char * max_friction;  /* --max-friction=M */
 }
 options;
 
@@ -417,6 +477,11 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
         { "bias", required_argument, NULL, OPT_BIAS },
         { "length", required_argument, NULL, OPT_LENGTH },
         { "max-modes", required_argument, NULL, OPT_MAXMODES },
+        { "complete", no_argument, NULL, OPT_COMPLETE },
+        { "friction", required_argument, NULL, OPT_FRICTION },
+        { "critical", no_argument, NULL, OPT_CRITICAL },
+        { "width", required_argument, NULL, OPT_WIDTH },
+        { "max-friction", required_argument, NULL, OPT_MAXFRICTION },
         { "help", no_argument, NULL, 'h' },
         { "version", no_argument, NULL, 'V' },
         { NULL, 0, NULL, 0 }
@@ -432,6 +497,11 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
     o->bias = NULL;
     o->length = NULL;
     o->max_modes = 1000;
+    o->complete = 0;
+    o->friction = NULL;
+    o->critical = 0;
+    o->width = NULL;
+    o->max_friction = NULL;
     opterr = 0;
     optind = 1;
     while ((c = getopt_long(argc, argv, "hV", opts, &idx)) != -1)
@@ -442,7 +512,10 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
             || (c == OPT_CERT && !(takes & TAKES_CERT))
             || (c == OPT_ARITH && !(takes & TAKES_ARITH))
             || ((c == OPT_BIAS || c == OPT_LENGTH) && !(takes & TAKES_BIAS))
-            || (c == OPT_MAXMODES && !(takes & TAKES_MAXMODES)))
+            || (c == OPT_MAXMODES && !(takes & TAKES_MAXMODES))
+            || (c == OPT_COMPLETE && !(takes & TAKES_COMPLETE))
+            || ((c == OPT_FRICTION || c == OPT_CRITICAL || c == OPT_WIDTH
+                 || c == OPT_MAXFRICTION) && !(takes & TAKES_SWEEP)))
             return usage_error(cmd, "option '--%s' does not apply here",
                                opts[idx].name);
         switch (c)
@@ -496,6 +569,21 @@ parse_options(options * o, int argc, char ** argv, const char * cmd,
                                    "(0: no limit), not '%s'", optarg);
             break;
         }
+        case OPT_COMPLETE:
+            o->complete = 1;
+            break;
+        case OPT_FRICTION:
+            o->friction = optarg;
+            break;
+        case OPT_CRITICAL:
+            o->critical = 1;
+            break;
+        case OPT_WIDTH:
+            o->width = optarg;
+            break;
+        case OPT_MAXFRICTION:
+            o->max_friction = optarg;
+            break;
         case 'h':
             help(stdout);
             return finish_output();
@@ -1397,6 +1485,352 @@ cleanup:
     return status;
 }
 
+static int
+cmd_plan(int argc, char ** argv)
+{
+    options o;
+    int status, with_wrench;
+    wc_problem_t P;
+    wc_error_t err;
+    wc_plan_t R;
+    wc_plan_wrench_t W;
+    fmpq g[3];
+    slong k;
+
+    if ((status = parse_options(&o, argc, argv, "plan", TAKES_COMPLETE,
+                                usage_plan)) >= 0)
+        return status;
+    if (argc - optind != 1 && argc - optind != 4)
+        return usage_error("plan", argc - optind < 1
+                           ? "plan needs PROBLEM%s"
+                           : "plan takes PROBLEM and optionally FX FY TAU%s",
+                           "");
+    with_wrench = argc - optind == 4;
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_plan_init(R);
+    wc_plan_wrench_init(W);
+    for (k = 0; k < 3; k++)
+        fmpq_init(g + k);
+    status = load_problem(P, argv[optind], err);
+    if (status == WC_OK && with_wrench)
+        status = parse_numbers(g, argv + optind + 1, 3, "<wrench>", err);
+    if (status == WC_OK)
+        status = with_wrench ? wc_plan_wrench(W, P, g, o.complete, err)
+            : wc_plan(R, P, o.complete, err);
+    if (status != WC_OK)
+    {
+        report(err, status);
+        goto cleanup;
+    }
+    if (with_wrench)
+        wc_plan_wrench_fprint(stdout, W, o.fmt == FMT_JSON);
+    else
+        wc_plan_fprint(stdout, R, P, o.fmt == FMT_JSON);
+    status = finish_output();
+
+cleanup:
+    for (k = 0; k < 3; k++)
+        fmpq_clear(g + k);
+    wc_plan_wrench_clear(W);
+    wc_plan_clear(R);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}
+
+/* A comma-separated list of exact numbers, located as <what>:1:COL.  */
+static int
+parse_list(fmpq ** v, slong * count, const char * s, const char * what,
+           wc_error_t err)
+{
+    const char * p = s;
+    slong n = 1, i;
+    int status = WC_OK;
+
+    for (i = 0; s[i] != '\0'; i++)
+        n += s[i] == ',';
+    *v = flint_malloc(sizeof(fmpq) * n);
+    for (i = 0; i < n; i++)
+        fmpq_init(*v + i);
+    *count = n;
+    for (i = 0; i < n && status == WC_OK; i++)
+    {
+        const char * e = strchr(p, ',');
+        size_t len = e != NULL ? (size_t) (e - p) : strlen(p);
+
+        if (wc_parse_number(*v + i, p, len, err) != WC_OK)
+        {
+            char * why = wc_error_format(err);
+
+            status = wc_error_set(err, WC_EINPUT, what, 1, p - s + 1, "%s",
+                                  why != NULL ? why : "bad number");
+            free(why);
+        }
+        else if (fmpq_sgn(*v + i) < 0)
+            status = wc_error_set(err, WC_EINPUT, what, 1, p - s + 1,
+                                  "a friction coefficient must not be "
+                                  "negative");
+        p += len + 1;
+    }
+    return status;
+}
+
+static int
+one_positive(fmpq_t x, const char * s, const char * what, wc_error_t err)
+{
+    fmpq * v = NULL;
+    slong n = 0, i;
+    int status = parse_list(&v, &n, s, what, err);
+
+    if (status == WC_OK && (n != 1 || fmpq_sgn(v) <= 0))
+        status = wc_error_set(err, WC_EINPUT, what, 1, 1,
+                              "expected one positive number");
+    if (status == WC_OK)
+        fmpq_set(x, v);
+    for (i = 0; i < n; i++)
+        fmpq_clear(v + i);
+    flint_free(v);
+    return status;
+}
+
+static void
+print_wrench(const fmpq * g, int json)
+{
+    slong k;
+
+    putchar(json ? '[' : '(');
+    for (k = 0; k < 3; k++)
+    {
+        fputs(k == 0 ? "" : ", ", stdout);
+        if (json)
+            putchar('"');
+        wc_fprint_fmpq(stdout, g + k);
+        if (json)
+            putchar('"');
+    }
+    putchar(json ? ']' : ')');
+}
+
+/* The critical bracket, with its two certificates: the plan at lo holds
+   the witness in G_goal, the plan at hi names the strings whose cones
+   cover R^3.  */
+static int
+print_critical(const wc_problem_t P, const fmpq_t width, const fmpq_t max,
+               int json, wc_error_t err)
+{
+    wc_critical_t C;
+    wc_plan_t H;
+    wc_plan_wrench_t W;
+    int status;
+    slong k, m;
+
+    wc_critical_init(C);
+    wc_plan_init(H);
+    wc_plan_wrench_init(W);
+    status = wc_plan_critical(C, P, width, max, err);
+    if (status == WC_OK && C->found)
+        status = wc_plan_with_friction(H, P, C->hi, err);
+    if (status == WC_OK && !C->empty_at_zero)
+    {
+        wc_problem_t Q;
+        slong i;
+
+        /* re-check the witness at lo, one cone at a time */
+        wc_problem_init(Q);
+        status = wc_problem_set(Q, P);
+        for (i = 0; i < Q->n && status == WC_OK; i++)
+        {
+            fmpq_set(Q->fixels[i].mu_s, C->lo);
+            fmpq_set(Q->fixels[i].mu_k, C->lo);
+        }
+        if (status == WC_OK)
+            status = wc_plan_wrench(W, Q, C->lo_witness, 0, err);
+        if (status == WC_OK && !W->in_goal)
+            status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                  "internal error: the witness at lo is not "
+                                  "in G_goal");
+        wc_problem_clear(Q);
+    }
+    if (status != WC_OK)
+        goto cleanup;
+    if (json)
+    {
+        printf("\"critical\": {\"found\": %s, \"lo\": \"",
+               C->found ? "true" : "false");
+        wc_fprint_fmpq(stdout, C->lo);
+        fputs("\", \"hi\": ", stdout);
+        if (C->found)
+        {
+            putchar('"');
+            wc_fprint_fmpq(stdout, C->hi);
+            putchar('"');
+        }
+        else
+            fputs("null", stdout);
+        fputs(", \"width\": \"", stdout);
+        wc_fprint_fmpq(stdout, width);
+        printf("\", \"plans\": %ld, \"lo_witness\": ", (long) C->evals);
+        if (C->empty_at_zero)
+            fputs("null", stdout);
+        else
+            print_wrench(C->lo_witness, 1);
+        fputs(", \"hi_cover\": [", stdout);
+        for (k = 0, m = 0; C->found && k < H->T->nneeded; k++)
+            if (H->exact_needed[k])
+                printf("%s\"%s\"", m++ ? ", " : "",
+                       H->T->strings[H->T->needed[k]]);
+        fputs("]}", stdout);
+        goto cleanup;
+    }
+    fputs("critical friction (mu_s = mu_k = mu at every fixel; G_goal "
+          "shrinks as mu grows):\n", stdout);
+    if (C->empty_at_zero)
+        fputs("  G_goal is empty already at mu = 0\n", stdout);
+    else
+    {
+        fputs("  lo = ", stdout);
+        wc_fprint_fmpq(stdout, C->lo);
+        fputs(": G_goal is not empty; g = ", stdout);
+        print_wrench(C->lo_witness, 0);
+        printf(" is in the cone of none of the %ld needed strings\n",
+               (long) W->n * (1L << (W->n - 1)));
+    }
+    if (C->found)
+    {
+        fputs("  hi = ", stdout);
+        wc_fprint_fmpq(stdout, C->hi);
+        fputs(": G_goal is empty; the cones of", stdout);
+        for (k = 0; k < H->T->nneeded; k++)
+            if (H->exact_needed[k])
+                printf(" %s", H->T->strings[H->T->needed[k]]);
+        fputs(" cover R^3\n", stdout);
+        if (!C->empty_at_zero)
+        {
+            fmpq_t w;
+
+            fmpq_init(w);
+            fmpq_sub(w, C->hi, C->lo);
+            fputs("  hi - lo = ", stdout);
+            wc_fprint_fmpq(stdout, w);
+            fputs(" <= ", stdout);
+            wc_fprint_fmpq(stdout, width);
+            printf(" (%ld plans)\n", (long) C->evals);
+            fmpq_clear(w);
+        }
+    }
+    else
+    {
+        fputs("  G_goal is not empty at any mu <= ", stdout);
+        wc_fprint_fmpq(stdout, max);
+        printf(" (%ld plans)\n", (long) C->evals);
+    }
+
+cleanup:
+    wc_plan_wrench_clear(W);
+    wc_plan_clear(H);
+    wc_critical_clear(C);
+    return status;
+}
+
+static int
+cmd_sweep(int argc, char ** argv)
+{
+    options o;
+    int status;
+    wc_problem_t P;
+    wc_error_t err;
+    wc_plan_t R;
+    fmpq * mu = NULL;
+    fmpq_t width, max;
+    slong n = 0, i;
+    int json;
+
+    if ((status = parse_options(&o, argc, argv, "sweep", TAKES_SWEEP,
+                                usage_sweep)) >= 0)
+        return status;
+    if (argc - optind != 1)
+        return usage_error("sweep", argc - optind < 1
+                           ? "sweep needs PROBLEM%s"
+                           : "sweep takes PROBLEM only%s", "");
+    if (o.friction == NULL && !o.critical)
+        return usage_error("sweep", "sweep needs --friction=LIST or "
+                           "--critical%s", "");
+    json = o.fmt == FMT_JSON;
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_plan_init(R);
+    fmpq_init(width);
+    fmpq_init(max);
+    fmpq_set_si(width, 1, 1000);
+    fmpq_set_si(max, 1024, 1);
+    status = load_problem(P, argv[optind], err);
+    if (status == WC_OK && o.friction != NULL)
+        status = parse_list(&mu, &n, o.friction, "<friction>", err);
+    if (status == WC_OK && o.width != NULL)
+        status = one_positive(width, o.width, "<width>", err);
+    if (status == WC_OK && o.max_friction != NULL)
+        status = one_positive(max, o.max_friction, "<max-friction>", err);
+    if (status == WC_OK)
+        status = wc_problem_check(P, err);
+    if (status == WC_OK && P->n > WC_PLAN_MAX_FIXELS)
+        status = wc_plan(R, P, 0, err);     /* says why */
+    if (status != WC_OK)
+    {
+        report(err, status);
+        goto cleanup;
+    }
+    /* Plans are computed one value at a time and printed as they come: an
+       error part way leaves a partial text on stdout, so compute every
+       plan once first.  */
+    for (i = 0; i < n && status == WC_OK; i++)
+        status = wc_plan_with_friction(R, P, mu + i, err);
+    if (status != WC_OK)
+    {
+        report(err, status);
+        goto cleanup;
+    }
+    if (json)
+        fputs("{\"sweep\": [", stdout);
+    for (i = 0; i < n && status == WC_OK; i++)
+    {
+        status = wc_plan_with_friction(R, P, mu + i, err);
+        if (status == WC_OK)
+        {
+            if (json && i)
+                fputs(", ", stdout);
+            wc_plan_sweep_fprint(stdout, R, P, mu + i, json);
+        }
+    }
+    if (json)
+        fputs(o.critical ? "], " : "]", stdout);
+    if (status == WC_OK && o.critical)
+    {
+        if (!json && n > 0)
+            putchar('\n');
+        status = print_critical(P, width, max, json, err);
+    }
+    if (json)
+        fputs("}\n", stdout);
+    if (status != WC_OK)
+    {
+        report(err, status);
+        goto cleanup;
+    }
+    status = finish_output();
+
+cleanup:
+    for (i = 0; i < n; i++)
+        fmpq_clear(mu + i);
+    flint_free(mu);
+    fmpq_clear(width);
+    fmpq_clear(max);
+    wc_plan_clear(R);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}
+
 /* Operands of classify and stability may be negative numbers ("-1"),
    which getopt would take for options: move every argument that is not an
    option (or an option's value) after a "--".  --bias FX FY TAU becomes
@@ -1407,7 +1841,7 @@ operands_last(int * pargc, char ** argv, char ** extra)
 {
     static const char * const valued[] = {
         "--format", "--certificate", "--length", "--bias", "--max-modes",
-        NULL
+        "--friction", "--width", "--max-friction", NULL
     };
     int argc = *pargc, i, j, no = 0, nx = 0, k;
     char ** opt = malloc(sizeof(char *) * (argc + 2));
@@ -1466,7 +1900,7 @@ operands_last(int * pargc, char ** argv, char ** extra)
 }
 
 static const char * const planned[] = {
-    "plan", "sweep", "draw", NULL
+    "draw", NULL
 };
 
 int
@@ -1501,13 +1935,17 @@ main(int argc, char ** argv)
         status = cmd_random(argc - 1, argv + 1);
     else if (strcmp(argv[1], "compare") == 0)
         status = cmd_compare(argc - 1, argv + 1);
+    else if (strcmp(argv[1], "sweep") == 0)
+        status = cmd_sweep(argc - 1, argv + 1);
     else if (strcmp(argv[1], "classify") == 0
-             || strcmp(argv[1], "stability") == 0)
+             || strcmp(argv[1], "stability") == 0
+             || strcmp(argv[1], "plan") == 0)
     {
         int n = argc - 1;
         char * extra, ** v = operands_last(&n, argv + 1, &extra);
 
-        status = argv[1][1] == 'l' ? cmd_classify(n, v) : cmd_stability(n, v);
+        status = argv[1][0] == 'p' ? cmd_plan(n, v)
+            : argv[1][1] == 'l' ? cmd_classify(n, v) : cmd_stability(n, v);
         free(v);
         free(extra);
     }

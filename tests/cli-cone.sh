@@ -73,7 +73,7 @@ for lib in GMP FLINT cddlib; do grep -q "$lib" "$tmp/v" || fail "--version lacks
 "$W" cone --version > /dev/null 2>&1 || fail "cone --version exit"
 
 # Unimplemented commands: exit 2, nothing on stdout.
-"$W" plan "$D/disk-two-fixels.wc" > "$tmp/o" 2> /dev/null
+"$W" draw "$D/disk-two-fixels.wc" > "$tmp/o" 2> /dev/null
 [ $? -eq 2 ] && [ ! -s "$tmp/o" ] || fail "planned command: want exit 2, empty stdout"
 
 # A write error is an I/O failure: exit 3.
