@@ -248,43 +248,64 @@ pow3(slong n)
     return p;
 }
 
-/* C[k] := W(T->strings[T->needed[k]]) for P.  */
+/* C[k] := W(x[k]) for P, k < count.  */
 static int
-needed_cones(wc_cone_struct * C, const wc_plan_strings_t T,
-             const wc_problem_t P, wc_error_t err)
+strings_cones(wc_cone_struct * C, char * const * x, const slong * idx,
+              slong count, const wc_problem_t P, wc_error_t err)
 {
     wc_problem_t Q;
     slong k;
     int status;
 
     wc_problem_init(Q);
-    status = wc_problem_set(Q, P);
-    for (k = 0; k < T->nneeded && status == WC_OK; k++)
-        status = string_cone(C + k, Q, T->strings[T->needed[k]], err);
-    wc_problem_clear(Q);
-    if (status == WC_EINTERNAL && err->message == NULL)
+    if ((status = wc_problem_set(Q, P)) != WC_OK)
         wc_error_set(err, status, NULL, 0, 0, "out of memory");
+    for (k = 0; k < count && status == WC_OK; k++)
+        status = string_cone(C + k, Q, x[idx != NULL ? idx[k] : k], err);
+    wc_problem_clear(Q);
     return status;
+}
+
+static int
+needed_cones(wc_cone_struct * C, const wc_plan_strings_t T,
+             const wc_problem_t P, wc_error_t err)
+{
+    return strings_cones(C, T->strings, T->needed, T->nneeded, P, err);
+}
+
+/* The 3^n outcome strings, in index order.  */
+static char **
+outcome_strings(slong count, slong n)
+{
+    char ** x = calloc(count + 1, sizeof(char *));
+    slong k;
+
+    for (k = 0; k < count; k++)
+    {
+        x[k] = malloc(n + 1);
+        outcome_string(x[k], k, n);
+    }
+    return x;
+}
+
+static void
+strings_free(char ** x, slong count)
+{
+    slong k;
+
+    for (k = 0; k < count; k++)
+        free(x[k]);
+    free(x);
 }
 
 static int
 outcome_cones(wc_cone_struct * C, slong count, const wc_problem_t P,
               wc_error_t err)
 {
-    wc_problem_t Q;
-    slong x;
-    char * s = malloc(P->n + 1);
-    int status;
+    char ** x = outcome_strings(count, P->n);
+    int status = strings_cones(C, x, NULL, count, P, err);
 
-    wc_problem_init(Q);
-    status = wc_problem_set(Q, P);
-    for (x = 0; x < count && status == WC_OK; x++)
-    {
-        outcome_string(s, x, P->n);
-        status = string_cone(C + x, Q, s, err);
-    }
-    wc_problem_clear(Q);
-    free(s);
+    strings_free(x, count);
     return status;
 }
 
@@ -758,7 +779,7 @@ wc_plan(wc_plan_t R, const wc_problem_t P, int complete, wc_error_t err)
     if (complete)
     {
         full = (slong) 1 << P->n;
-        member = malloc(R->noutcomes);
+        member = malloc((size_t) R->noutcomes + 1);
         adj = malloc(sizeof(ulong) * full);
         acc = malloc(sizeof(int) * (ncells + 1));
         okeys = keys_init(R->outcomes, R->noutcomes, R->cells);
@@ -928,7 +949,7 @@ wc_plan_wrench(wc_plan_wrench_t W, const wc_problem_t P, const fmpq * g,
         C = cones_init(count);
         if ((status = outcome_cones(C, count, P, err)) != WC_OK)
             goto cleanup;
-        member = malloc(count);
+        member = malloc((size_t) count + 1);
         for (k = 0; k < count; k++)
             member[k] = (unsigned char) wc_cone_contains(C + k, g);
         adj = calloc(nst, sizeof(ulong));

@@ -28,25 +28,6 @@ tf(int b)
     return b ? "true" : "false";
 }
 
-static void
-qvec(FILE * out, const fmpq * v, slong len, int json)
-{
-    slong j;
-
-    putc(json ? '[' : '(', out);
-    for (j = 0; j < len; j++)
-    {
-        if (j)
-            fputs(", ", out);
-        if (json)
-            putc('"', out);
-        wc_fprint_fmpq(out, v + j);
-        if (json)
-            putc('"', out);
-    }
-    putc(json ? ']' : ')', out);
-}
-
 /* The strings with the given indices: a JSON array or a spaced list.  */
 static void
 strlist(FILE * out, char * const * s, const slong * idx, slong count,
@@ -151,7 +132,7 @@ static void
 text_witness(FILE * out, const char * what, const fmpq * g)
 {
     fprintf(out, "%s", what);
-    qvec(out, g, 3, 0);
+    wc_fprint_qvec(out, g, 3, 0);
 }
 
 int
@@ -192,14 +173,14 @@ wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
         if (!R->goal_in_strong)
         {
             fputs(", \"goal_not_strong\": ", out);
-            qvec(out, R->strong_witness, 3, 1);
+            wc_fprint_qvec(out, R->strong_witness, 3, 1);
         }
         fprintf(out, ", \"goal_in_strong_paper\": %s",
                 tf(R->goal_in_strong_paper));
         if (!R->goal_in_strong_paper)
         {
             fputs(", \"goal_not_strong_paper\": ", out);
-            qvec(out, R->paper_witness, 3, 1);
+            wc_fprint_qvec(out, R->paper_witness, 3, 1);
         }
         if (R->has_push)
         {
@@ -213,7 +194,7 @@ wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
             wc_set_fprint_json(out, R->accepted);
             fputs(", \"outside_goal\": ", out);
             if (R->has_extra)
-                qvec(out, R->extra, 3, 1);
+                wc_fprint_qvec(out, R->extra, 3, 1);
             else
                 fputs("null", out);
             if (R->has_push_accepted)
@@ -338,7 +319,7 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
     if (json)
     {
         fputs("{\"wrench\": ", out);
-        qvec(out, W->g, 3, 1);
+        wc_fprint_qvec(out, W->g, 3, 1);
         fprintf(out, ", \"in_goal\": %s, \"holding\": ", tf(W->in_goal));
         strlist(out, W->holding, NULL, W->nholding, 1);
         if (W->complete)
@@ -368,7 +349,7 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
         return done(out);
     }
     fputs("wrench g = ", out);
-    qvec(out, W->g, 3, 0);
+    wc_fprint_qvec(out, W->g, 3, 0);
     fputs(W->in_goal ? "\n  in G_goal: in the cone of no needed string\n"
           : "\n  not in G_goal: held by ", out);
     if (!W->in_goal)

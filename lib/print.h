@@ -25,6 +25,10 @@ extern "C" {
 /* A rational as text, "p/q" or "p" in lowest terms.  */
 void wc_fprint_fmpq(FILE * out, const fmpq_t x);
 
+/* A vector of len rationals: "(a, b, c)" as text, or ["a", "b", "c"] as
+   JSON.  */
+void wc_fprint_qvec(FILE * out, const fmpq * v, slong len, int json);
+
 /* s as a JSON string literal, with quotes and escapes.  */
 void wc_fprint_json_string(FILE * out, const char * s);
 

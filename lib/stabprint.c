@@ -16,8 +16,8 @@ done(FILE * out)
     return ferror(out) ? WC_EINTERNAL : WC_OK;
 }
 
-static void
-qvec(FILE * out, const fmpq * v, slong len, int json)
+void
+wc_fprint_qvec(FILE * out, const fmpq * v, slong len, int json)
 {
     slong j;
 
@@ -104,7 +104,7 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
     if (json)
     {
         fputs("{\"wrench\": ", out);
-        qvec(out, R->g, 3, 1);
+        wc_fprint_qvec(out, R->g, 3, 1);
         fputs(", \"modes\": [", out);
         for (i = 0; i < R->nmodes; i++)
         {
@@ -121,30 +121,30 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
             fputs(i ? ", {\"sign\": " : "{\"sign\": ", out);
             wc_fprint_json_string(out, R->motions[i].sign);
             fputs(", \"nudot\": ", out);
-            qvec(out, R->motions[i].nudot, 3, 1);
+            wc_fprint_qvec(out, R->motions[i].nudot, 3, 1);
             fputs(", \"c\": ", out);
-            qvec(out, R->motions[i].c, 2 * n, 1);
+            wc_fprint_qvec(out, R->motions[i].c, 2 * n, 1);
             putc('}', out);
         }
         fputs("]", out);
         if (R->weak)
         {
             fputs(", \"static_c\": ", out);
-            qvec(out, R->weak_c, 2 * n, 1);
+            wc_fprint_qvec(out, R->weak_c, 2 * n, 1);
         }
         else
         {
             fputs(", \"separator\": ", out);
-            qvec(out, R->weak_sep, 3, 1);
+            wc_fprint_qvec(out, R->weak_sep, 3, 1);
         }
         if (!R->strong_paper)
         {
             fputs(", \"paper_witness\": {\"mode\": ", out);
             wc_fprint_json_string(out, R->paper.sign);
             fputs(", \"nudot\": ", out);
-            qvec(out, R->paper.nudot, 3, 1);
+            wc_fprint_qvec(out, R->paper.nudot, 3, 1);
             fputs(", \"c\": ", out);
-            qvec(out, R->paper.c, 2 * n, 1);
+            wc_fprint_qvec(out, R->paper.c, 2 * n, 1);
             putc('}', out);
         }
         fputs("}\n", out);
@@ -152,7 +152,7 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
     }
 
     fputs("wrench g = ", out);
-    qvec(out, R->g, 3, 0);
+    wc_fprint_qvec(out, R->g, 3, 0);
     fputs("  (fx, fy, torque)\n", out);
     fprintf(out, "weakly stable: %s\n", yes(R->weak));
     if (R->weak)
@@ -165,7 +165,7 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
     {
         fputs("  separator y: y . g > 0, y . (-J c) <= 0 for every admissible"
               " force: y = ", out);
-        qvec(out, R->weak_sep, 3, 0);
+        wc_fprint_qvec(out, R->weak_sep, 3, 0);
         putc('\n', out);
     }
     fprintf(out, "strongly stable (exact semantics, Pang and Trinkle): %s\n",
@@ -181,7 +181,7 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
     if (!R->strong_paper)
     {
         fprintf(out, "  W(%s) holds the wrench: nudot = ", R->paper.sign);
-        qvec(out, R->paper.nudot, 3, 0);
+        wc_fprint_qvec(out, R->paper.nudot, 3, 0);
         fputs(", forces ", out);
         text_forces(out, R->paper.c, n);
         putc('\n', out);
@@ -205,7 +205,7 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
     for (i = 0; i < R->nmotions; i++)
     {
         fprintf(out, "  %s  nudot = ", R->motions[i].sign);
-        qvec(out, R->motions[i].nudot, 3, 0);
+        wc_fprint_qvec(out, R->motions[i].nudot, 3, 0);
         fputs("  forces ", out);
         text_forces(out, R->motions[i].c, n);
         putc('\n', out);
@@ -334,7 +334,7 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
         if (S->differ)
         {
             fputs(", \"difference_witness\": {\"wrench\": ", out);
-            qvec(out, S->diff_g, 3, 1);
+            wc_fprint_qvec(out, S->diff_g, 3, 1);
             fprintf(out, ", \"strong\": %s, \"strong_paper\": %s}",
                     tf(S->diff_in_exact), tf(!S->diff_in_exact));
         }
@@ -364,7 +364,7 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
     if (S->differ)
     {
         fputs("the semantics differ: e.g. g = ", out);
-        qvec(out, S->diff_g, 3, 0);
+        wc_fprint_qvec(out, S->diff_g, 3, 0);
         fprintf(out, " is strongly stable under %s only%s\n",
                 S->diff_in_exact ? "the definition (exact)"
                 : "eq. 19 (paper)",
@@ -402,7 +402,7 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
     fputs(", \"inertia\": ", out);
     jq(out, P->inertia);
     fputs(", \"com\": ", out);
-    qvec(out, P->com, 2, 1);
+    wc_fprint_qvec(out, P->com, 2, 1);
     fputs(",\n  \"fixels\": [", out);
     for (i = 0; i < P->n; i++)
     {
@@ -410,9 +410,9 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
 
         fputs(i > 0 ? ",\n   " : "\n   ", out);
         fputs("{\"point\": ", out);
-        qvec(out, f->point, 2, 1);
+        wc_fprint_qvec(out, f->point, 2, 1);
         fputs(", \"normal\": ", out);
-        qvec(out, f->normal, 2, 1);
+        wc_fprint_qvec(out, f->normal, 2, 1);
         fprintf(out, ", \"state\": \"%s\", \"mu_s\": ",
                 f->state == WC_TOUCHING ? "touching" : "near");
         jq(out, f->mu_s);
@@ -421,18 +421,18 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
         fputc('}', out);
     }
     fputs("]},\n \"wrench\": ", out);
-    qvec(out, R->g, 3, 1);
+    wc_fprint_qvec(out, R->g, 3, 1);
     fprintf(out, ",\n \"weakly_stable\": %s,\n \"weak\": ",
             R->weak ? "true" : "false");
     if (R->weak)
     {
         fputs("{\"c\": ", out);
-        qvec(out, R->weak_c, 2 * R->n, 1);
+        wc_fprint_qvec(out, R->weak_c, 2 * R->n, 1);
     }
     else
     {
         fputs("{\"separator\": ", out);
-        qvec(out, R->weak_sep, 3, 1);
+        wc_fprint_qvec(out, R->weak_sep, 3, 1);
     }
     fprintf(out, "},\n \"strongly_stable\": %s", R->strong ? "true" : "false");
     if (R->weak && !R->strong)
@@ -442,9 +442,9 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
         fputs(",\n \"motion\": {\"sign\": ", out);
         wc_fprint_json_string(out, a->sign);
         fputs(", \"nudot\": ", out);
-        qvec(out, a->nudot, 3, 1);
+        wc_fprint_qvec(out, a->nudot, 3, 1);
         fputs(", \"c\": ", out);
-        qvec(out, a->c, 2 * R->n, 1);
+        wc_fprint_qvec(out, a->c, 2 * R->n, 1);
         fputc('}', out);
     }
     if (R->strong)
@@ -460,7 +460,7 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
             if (f->rotation != 0)
                 fprintf(out, ", \"rotation\": %d", f->rotation);
             fputs(", \"multipliers\": ", out);
-            qvec(out, f->mult, f->nmult, 1);
+            wc_fprint_qvec(out, f->mult, f->nmult, 1);
             fputc('}', out);
         }
         fputc(']', out);

@@ -1594,24 +1594,6 @@ one_positive(fmpq_t x, const char * s, const char * what, wc_error_t err)
     return status;
 }
 
-static void
-print_wrench(const fmpq * g, int json)
-{
-    slong k;
-
-    putchar(json ? '[' : '(');
-    for (k = 0; k < 3; k++)
-    {
-        fputs(k == 0 ? "" : ", ", stdout);
-        if (json)
-            putchar('"');
-        wc_fprint_fmpq(stdout, g + k);
-        if (json)
-            putchar('"');
-    }
-    putchar(json ? ']' : ')');
-}
-
 /* The critical bracket, with its two certificates: the plan at lo holds
    the witness in G_goal, the plan at hi names the strings whose cones
    cover R^3.  */
@@ -1674,7 +1656,7 @@ print_critical(const wc_problem_t P, const fmpq_t width, const fmpq_t max,
         if (C->empty_at_zero)
             fputs("null", stdout);
         else
-            print_wrench(C->lo_witness, 1);
+            wc_fprint_qvec(stdout, C->lo_witness, 3, 1);
         fputs(", \"hi_cover\": [", stdout);
         for (k = 0, m = 0; C->found && k < H->T->nneeded; k++)
             if (H->exact_needed[k])
@@ -1692,7 +1674,7 @@ print_critical(const wc_problem_t P, const fmpq_t width, const fmpq_t max,
         fputs("  lo = ", stdout);
         wc_fprint_fmpq(stdout, C->lo);
         fputs(": G_goal is not empty; g = ", stdout);
-        print_wrench(C->lo_witness, 0);
+        wc_fprint_qvec(stdout, C->lo_witness, 3, 0);
         printf(" is in the cone of none of the %ld needed strings\n",
                (long) W->n * (1L << (W->n - 1)));
     }
