@@ -254,7 +254,7 @@ wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
     else
         text_witness(out, "  exact semantics: no, e.g. g = ", R->strong_witness);
     if (!R->goal_in_strong)
-        fputs(" is in G_goal and moves the seated part\n", out);
+        fputs(" is in G_goal but not strongly stable\n", out);
     if (R->goal_in_strong_paper)
         fputs("  paper semantics: yes\n", out);
     else

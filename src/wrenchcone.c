@@ -1596,23 +1596,40 @@ one_positive(fmpq_t x, const char * s, const char * what, wc_error_t err)
 
 /* The critical bracket, with its two certificates: the plan at lo holds
    the witness in G_goal, the plan at hi names the strings whose cones
-   cover R^3.  */
-static int
-print_critical(const wc_problem_t P, const fmpq_t width, const fmpq_t max,
-               int json, wc_error_t err)
+   cover R^3.  Computed in full before anything is printed.  */
+typedef struct
 {
     wc_critical_t C;
     wc_plan_t H;
     wc_plan_wrench_t W;
-    int status;
-    slong k, m;
+}
+crit_job;
 
-    wc_critical_init(C);
-    wc_plan_init(H);
-    wc_plan_wrench_init(W);
-    status = wc_plan_critical(C, P, width, max, err);
+static void
+crit_init(crit_job * j)
+{
+    wc_critical_init(j->C);
+    wc_plan_init(j->H);
+    wc_plan_wrench_init(j->W);
+}
+
+static void
+crit_clear(crit_job * j)
+{
+    wc_plan_wrench_clear(j->W);
+    wc_plan_clear(j->H);
+    wc_critical_clear(j->C);
+}
+
+static int
+crit_compute(crit_job * j, const wc_problem_t P, const fmpq_t width,
+             const fmpq_t max, wc_error_t err)
+{
+    wc_critical_struct * C = j->C;
+    int status = wc_plan_critical(C, P, width, max, err);
+
     if (status == WC_OK && C->found)
-        status = wc_plan_with_friction(H, P, C->hi, err);
+        status = wc_plan_with_friction(j->H, P, C->hi, err);
     if (status == WC_OK && !C->empty_at_zero)
     {
         wc_problem_t Q;
@@ -1627,15 +1644,25 @@ print_critical(const wc_problem_t P, const fmpq_t width, const fmpq_t max,
             fmpq_set(Q->fixels[i].mu_k, C->lo);
         }
         if (status == WC_OK)
-            status = wc_plan_wrench(W, Q, C->lo_witness, 0, err);
-        if (status == WC_OK && !W->in_goal)
+            status = wc_plan_wrench(j->W, Q, C->lo_witness, 0, err);
+        if (status == WC_OK && !j->W->in_goal)
             status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                   "internal error: the witness at lo is not "
                                   "in G_goal");
         wc_problem_clear(Q);
     }
-    if (status != WC_OK)
-        goto cleanup;
+    return status;
+}
+
+static void
+crit_print(const crit_job * j, const fmpq_t width, const fmpq_t max,
+           int json)
+{
+    const wc_critical_struct * C = j->C;
+    const wc_plan_struct * H = j->H;
+    const wc_plan_wrench_struct * W = j->W;
+    slong k, m;
+
     if (json)
     {
         printf("\"critical\": {\"found\": %s, \"lo\": \"",
@@ -1663,7 +1690,7 @@ print_critical(const wc_problem_t P, const fmpq_t width, const fmpq_t max,
                 printf("%s\"%s\"", m++ ? ", " : "",
                        H->T->strings[H->T->needed[k]]);
         fputs("]}", stdout);
-        goto cleanup;
+        return;
     }
     fputs("critical friction (mu_s = mu_k = mu at every fixel; G_goal "
           "shrinks as mu grows):\n", stdout);
@@ -1707,12 +1734,6 @@ print_critical(const wc_problem_t P, const fmpq_t width, const fmpq_t max,
         wc_fprint_fmpq(stdout, max);
         printf(" (%ld plans)\n", (long) C->evals);
     }
-
-cleanup:
-    wc_plan_wrench_clear(W);
-    wc_plan_clear(H);
-    wc_critical_clear(C);
-    return status;
 }
 
 static int
@@ -1723,6 +1744,8 @@ cmd_sweep(int argc, char ** argv)
     wc_problem_t P;
     wc_error_t err;
     wc_plan_t R;
+    wc_plan_struct * plans = NULL;
+    crit_job crit;
     fmpq * mu = NULL;
     fmpq_t width, max;
     slong n = 0, i;
@@ -1747,6 +1770,7 @@ cmd_sweep(int argc, char ** argv)
     fmpq_set_si(width, 1, 1000);
     fmpq_set_si(max, 1024, 1);
     status = load_problem(P, argv[optind], err);
+    crit_init(&crit);
     if (status == WC_OK && o.friction != NULL)
         status = parse_list(&mu, &n, o.friction, "<friction>", err);
     if (status == WC_OK && o.width != NULL)
@@ -1762,11 +1786,14 @@ cmd_sweep(int argc, char ** argv)
         report(err, status);
         goto cleanup;
     }
-    /* Plans are computed one value at a time and printed as they come: an
-       error part way leaves a partial text on stdout, so compute every
-       plan once first.  */
+    /* Every plan is computed before anything is printed.  */
+    plans = flint_malloc(sizeof(wc_plan_struct) * (n + 1));
+    for (i = 0; i < n; i++)
+        wc_plan_init(plans + i);
     for (i = 0; i < n && status == WC_OK; i++)
-        status = wc_plan_with_friction(R, P, mu + i, err);
+        status = wc_plan_with_friction(plans + i, P, mu + i, err);
+    if (status == WC_OK && o.critical)
+        status = crit_compute(&crit, P, width, max, err);
     if (status != WC_OK)
     {
         report(err, status);
@@ -1774,34 +1801,29 @@ cmd_sweep(int argc, char ** argv)
     }
     if (json)
         fputs("{\"sweep\": [", stdout);
-    for (i = 0; i < n && status == WC_OK; i++)
+    for (i = 0; i < n; i++)
     {
-        status = wc_plan_with_friction(R, P, mu + i, err);
-        if (status == WC_OK)
-        {
-            if (json && i)
-                fputs(", ", stdout);
-            wc_plan_sweep_fprint(stdout, R, P, mu + i, json);
-        }
+        if (json && i)
+            fputs(", ", stdout);
+        wc_plan_sweep_fprint(stdout, plans + i, P, mu + i, json);
     }
     if (json)
         fputs(o.critical ? "], " : "]", stdout);
-    if (status == WC_OK && o.critical)
+    if (o.critical)
     {
         if (!json && n > 0)
             putchar('\n');
-        status = print_critical(P, width, max, json, err);
+        crit_print(&crit, width, max, json);
     }
     if (json)
         fputs("}\n", stdout);
-    if (status != WC_OK)
-    {
-        report(err, status);
-        goto cleanup;
-    }
     status = finish_output();
 
 cleanup:
+    crit_clear(&crit);
+    for (i = 0; plans != NULL && i < n; i++)
+        wc_plan_clear(plans + i);
+    flint_free(plans);
     for (i = 0; i < n; i++)
         fmpq_clear(mu + i);
     flint_free(mu);
