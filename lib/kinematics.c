@@ -534,7 +534,7 @@ enumerate(wc_modes_t M, const wc_problem_t P)
     W.n = n;
     W.a = a;
     W.S = &S;
-    W.sg = flint_malloc(sizeof(int) * (K + 1));
+    W.sg = flint_calloc(K + 1, sizeof(int));
     W.cur = flint_malloc(n + 1);
     W.cur[n] = '\0';
     W.pen = 0;

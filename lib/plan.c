@@ -653,16 +653,23 @@ check_size(const wc_problem_t P, int complete, wc_error_t err)
     return WC_OK;
 }
 
+/* Bit k of cell i's row of the membership matrix.  */
+#define IN(i, k) ((int) ((in[(i) * words + (k) / FLINT_BITS] \
+                          >> ((k) % FLINT_BITS)) & 1))
+#define IN_SET(i, k) (in[(i) * words + (k) / FLINT_BITS] \
+                      |= UWORD(1) << ((k) % FLINT_BITS))
+
 int
 wc_plan(wc_plan_t R, const wc_problem_t P, int complete, wc_error_t err)
 {
     wc_problem_t Q;
     fmpz_mat_t planes;
     slong np = 0, nn, i, k, ncells, full;
-    unsigned char * in = NULL, * member = NULL;
+    ulong * in = NULL;
+    unsigned char * member = NULL;
     int * goal = NULL, * acc = NULL, status;
     ulong * adj = NULL;
-    slong * cnt = NULL;
+    slong * cnt = NULL, words = 0;
     cone_key * keys = NULL, * okeys = NULL;
     fmpq g[3];
 
@@ -716,19 +723,27 @@ wc_plan(wc_plan_t R, const wc_problem_t P, int complete, wc_error_t err)
        cones kept so far hold each cell.  */
     ncells = R->cells->count;
     keys = keys_init(R->cones, nn, R->cells);
-    in = malloc((size_t) ncells * nn + 1);
+    words = (nn + FLINT_BITS - 1) / FLINT_BITS;    /* a bit per cone */
+    in = calloc((size_t) ncells * words + 1, sizeof(ulong));
     goal = malloc(sizeof(int) * (ncells + 1));
     cnt = malloc(sizeof(slong) * (ncells + 1));
+    if (in == NULL || goal == NULL || cnt == NULL)
+    {
+        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                              "out of memory (%ld cells, %ld cones)",
+                              (long) ncells, (long) nn);
+        goto cleanup;
+    }
     for (i = 0; i < ncells; i++)
     {
         cell_point(g, R->cells, i);
         cnt[i] = 0;
         for (k = 0; k < nn; k++)
-        {
-            in[i * nn + k] = (unsigned char) key_contains(keys + k, R->cells,
-                                                          i, g);
-            cnt[i] += in[i * nn + k];
-        }
+            if (key_contains(keys + k, R->cells, i, g))
+            {
+                IN_SET(i, k);
+                cnt[i]++;
+            }
         goal[i] = cnt[i] == 0;
     }
 
@@ -741,13 +756,13 @@ wc_plan(wc_plan_t R, const wc_problem_t P, int complete, wc_error_t err)
         int covered = 1;
 
         for (i = 0; i < ncells && covered; i++)
-            covered = !in[i * nn + k] || cnt[i] >= 2;
+            covered = !IN(i, k) || cnt[i] >= 2;
         R->exact_needed[k] = !covered;
         if (covered)
         {
             R->nexact--;
             for (i = 0; i < ncells; i++)
-                cnt[i] -= in[i * nn + k];
+                cnt[i] -= IN(i, k);
         }
     }
 
@@ -782,6 +797,12 @@ wc_plan(wc_plan_t R, const wc_problem_t P, int complete, wc_error_t err)
         member = malloc((size_t) R->noutcomes + 1);
         adj = malloc(sizeof(ulong) * full);
         acc = malloc(sizeof(int) * (ncells + 1));
+        if (member == NULL || adj == NULL || acc == NULL)
+        {
+            status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                  "out of memory");
+            goto cleanup;
+        }
         okeys = keys_init(R->outcomes, R->noutcomes, R->cells);
         R->has_extra = 0;
         for (i = 0; i < ncells; i++)
@@ -897,9 +918,6 @@ add_edge(void * p, ulong from, ulong to, slong outcome)
     if ((c->adj[from] >> to) & 1)
         return;     /* one outcome per edge is enough to show it */
     c->adj[from] |= UWORD(1) << to;
-    W->from = realloc(W->from, sizeof(ulong) * (W->nedges + 1));
-    W->to = realloc(W->to, sizeof(ulong) * (W->nedges + 1));
-    W->via = realloc(W->via, sizeof(char *) * (W->nedges + 1));
     W->from[W->nedges] = from;
     W->to[W->nedges] = to;
     W->via[W->nedges] = malloc(W->n + 1);
@@ -953,6 +971,10 @@ wc_plan_wrench(wc_plan_wrench_t W, const wc_problem_t P, const fmpq * g,
         for (k = 0; k < count; k++)
             member[k] = (unsigned char) wc_cone_contains(C + k, g);
         adj = calloc(nst, sizeof(ulong));
+        /* at most one edge per pair of states */
+        W->from = malloc(sizeof(ulong) * nst * nst);
+        W->to = malloc(sizeof(ulong) * nst * nst);
+        W->via = malloc(sizeof(char *) * nst * nst);
         c.W = W;
         c.adj = adj;
         transitions(P->n, member, add_edge, &c);
@@ -1044,9 +1066,7 @@ wc_critical_clear(wc_critical_t C)
 }
 
 /* Whether G_goal of P at friction mu is empty, with a wrench in it when
-   not: the needed cones and their arrangement only.  A wrench that was in
-   G_goal at a larger friction still is (G_goal shrinks as mu grows), so
-   the search reuses its last witness first.  */
+   not: the needed cones and their arrangement only.  */
 static int
 goal_empty(int * empty, fmpq * witness, const wc_plan_strings_t T,
            const wc_problem_t P, const fmpq_t mu, wc_error_t err)

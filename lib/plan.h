@@ -201,8 +201,8 @@ int wc_plan_with_friction(wc_plan_t R, const wc_problem_t P,
    search starts at [0, 1] and doubles hi while G_goal is nonempty, up to
    max (then found = 0: nonempty at every mu <= max, lo = max with its
    witness).  When G_goal is empty already at mu = 0, found = 1, lo = hi =
-   0 and empty_at_zero = 1.  Bisection keeps the ends dyadic.  evals counts
-   the plans computed.  Returns as wc_plan.  */
+   0 and empty_at_zero = 1.  With max a power of two the ends are dyadic.
+   evals counts the plans computed.  Returns as wc_plan.  */
 typedef struct
 {
     int found, empty_at_zero;

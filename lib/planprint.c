@@ -443,7 +443,9 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
     }
     fputs("; needed exactly: ", out);
     strlist(out, R->T->strings, ex, R->nexact, 0);
-    fprintf(out, "; inside G_strong: %s\n", R->goal_in_strong ? "yes" : "no");
+    fprintf(out, "; inside G_strong (exact, paper semantics): %s, %s\n",
+            R->goal_in_strong ? "yes" : "no",
+            R->goal_in_strong_paper ? "yes" : "no");
     for (i = 0; i < G->npieces; i++)
     {
         const wc_cone_struct * C = G->pieces + i;

@@ -1542,7 +1542,7 @@ cleanup:
 /* A comma-separated list of exact numbers, located as <what>:1:COL.  */
 static int
 parse_list(fmpq ** v, slong * count, const char * s, const char * what,
-           wc_error_t err)
+           const char * noun, wc_error_t err)
 {
     const char * p = s;
     slong n = 1, i;
@@ -1569,19 +1569,19 @@ parse_list(fmpq ** v, slong * count, const char * s, const char * what,
         }
         else if (fmpq_sgn(*v + i) < 0)
             status = wc_error_set(err, WC_EINPUT, what, 1, p - s + 1,
-                                  "a friction coefficient must not be "
-                                  "negative");
+                                  "%s must not be negative", noun);
         p += len + 1;
     }
     return status;
 }
 
 static int
-one_positive(fmpq_t x, const char * s, const char * what, wc_error_t err)
+one_positive(fmpq_t x, const char * s, const char * what, const char * noun,
+             wc_error_t err)
 {
     fmpq * v = NULL;
     slong n = 0, i;
-    int status = parse_list(&v, &n, s, what, err);
+    int status = parse_list(&v, &n, s, what, noun, err);
 
     if (status == WC_OK && (n != 1 || fmpq_sgn(v) <= 0))
         status = wc_error_set(err, WC_EINPUT, what, 1, 1,
@@ -1660,7 +1660,6 @@ crit_print(const crit_job * j, const fmpq_t width, const fmpq_t max,
 {
     const wc_critical_struct * C = j->C;
     const wc_plan_struct * H = j->H;
-    const wc_plan_wrench_struct * W = j->W;
     slong k, m;
 
     if (json)
@@ -1702,8 +1701,7 @@ crit_print(const crit_job * j, const fmpq_t width, const fmpq_t max,
         wc_fprint_fmpq(stdout, C->lo);
         fputs(": G_goal is not empty; g = ", stdout);
         wc_fprint_qvec(stdout, C->lo_witness, 3, 0);
-        printf(" is in the cone of none of the %ld needed strings\n",
-               (long) W->n * (1L << (W->n - 1)));
+        fputs(" is in the cone of no needed string\n", stdout);
     }
     if (C->found)
     {
@@ -1772,11 +1770,13 @@ cmd_sweep(int argc, char ** argv)
     status = load_problem(P, argv[optind], err);
     crit_init(&crit);
     if (status == WC_OK && o.friction != NULL)
-        status = parse_list(&mu, &n, o.friction, "<friction>", err);
+        status = parse_list(&mu, &n, o.friction, "<friction>",
+                            "a friction coefficient", err);
     if (status == WC_OK && o.width != NULL)
-        status = one_positive(width, o.width, "<width>", err);
+        status = one_positive(width, o.width, "<width>", "the width", err);
     if (status == WC_OK && o.max_friction != NULL)
-        status = one_positive(max, o.max_friction, "<max-friction>", err);
+        status = one_positive(max, o.max_friction, "<max-friction>",
+                              "the largest friction", err);
     if (status == WC_OK)
         status = wc_problem_check(P, err);
     if (status == WC_OK && P->n > WC_PLAN_MAX_FIXELS)

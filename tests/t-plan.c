@@ -522,6 +522,43 @@ check_problem(const wc_problem_t P, const char * what, int complete,
         wl_clear(&F);
     }
 
+    /* ... and a kept cone has a cell that no other kept cone holds (the
+       oracle's LPs confirm it).  */
+    for (j = 0; j < nn; j++)
+    {
+        fmpq g[3];
+        slong c, m;
+        int found = 0;
+
+        if (!R->exact_needed[j])
+            continue;
+        for (k = 0; k < 3; k++)
+            fmpq_init(g + k);
+        for (c = R->cells->count - 1; c >= 0 && !found; c--)
+        {
+            for (k = 0; k < 3; k++)
+                fmpq_set_fmpz(g + k, fmpz_mat_entry(R->cells->point, c, k));
+            if (!wc_cone_contains(R->cones + j, g))
+                continue;
+            for (m = 0; m < nn; m++)
+                if (m != j && R->exact_needed[m]
+                    && wc_cone_contains(R->cones + m, g))
+                    break;
+            found = m == nn;
+        }
+        if (!found)
+            fail_g(P, what, NULL, "a cone kept by exact redundancy is "
+                   "covered by the others");
+        for (m = 0; m < nn; m++)
+            if (R->exact_needed[m]
+                && ref_wrench_in_cone(P, R->T->strings[R->T->needed[m]], g)
+                != (m == j))
+                fail_g(P, what, g, "the oracle disagrees on a point of a "
+                       "kept cone alone");
+        for (k = 0; k < 3; k++)
+            fmpq_clear(g + k);
+    }
+
     /* Pushing regions: sample points of every edge or direction.  */
     if (R->has_push && P->shape == WC_SHAPE_POLYGON)
     {
@@ -830,6 +867,74 @@ test_three(void)
     wc_problem_clear(P);
 }
 
+/* The complete plan at n = 4 (64-state graphs of the ulong adjacency):
+   a disk with four fixels on its lower left quarter, a few wrenches
+   against the oracle (4^4 LPs each).  */
+static void
+test_complete4(void)
+{
+    static const slong pts[4][2][2] = {
+        { { -15, 17 }, { -8, 17 } }, { { -4, 5 }, { -3, 5 } },
+        { { -3, 5 }, { -4, 5 } }, { { -8, 17 }, { -15, 17 } } };
+    static const slong ws[6][3] = {
+        { -1, -1, 0 }, { -3, -1, 1 }, { -1, -4, -1 }, { 0, 1, 0 },
+        { -2, -3, 5 }, { 1, -1, 0 } };
+    wc_problem_t P;
+    wc_plan_t R;
+    wc_plan_wrench_t W;
+    wc_error_t err;
+    fmpq g[3];
+    slong i, k;
+
+    wc_problem_init(P);
+    wc_plan_init(R);
+    wc_plan_wrench_init(W);
+    wc_error_init(err);
+    for (k = 0; k < 3; k++)
+        fmpq_init(g + k);
+    fmpq_set_si(P->inertia, 1, 2);
+    for (i = 0; i < 4; i++)
+    {
+        wc_fixel_struct * f = wc_problem_add_fixel(P);
+
+        fmpq_set_si(f->point + 0, pts[i][0][0], pts[i][0][1]);
+        fmpq_set_si(f->point + 1, pts[i][1][0], pts[i][1][1]);
+        fmpq_neg(f->normal + 0, f->point + 0);
+        fmpq_neg(f->normal + 1, f->point + 1);
+        fmpq_set_si(f->mu_s, 1, 5);
+        fmpq_set_si(f->mu_k, 1, 5);
+        f->state = WC_NEAR;
+    }
+    if (wc_plan(R, P, 1, err) != WC_OK)
+        wctest_fail("four fixels: %s", err->message);
+    for (i = 0; i < 7; i++)
+    {
+        int acc;
+
+        if (i < 6)
+            vec3_si(g, ws[i][0], ws[i][1], ws[i][2]);
+        else if (R->has_extra)
+            for (k = 0; k < 3; k++)
+                fmpq_set(g + k, R->extra + k);
+        else
+            break;
+        acc = ref_plan_complete_accepts(P, g);
+        if (wc_plan_wrench(W, P, g, 1, err) != WC_OK)
+            fail_g(P, "four fixels", g, err->message);
+        if (acc < 0 || (W->verdict == WC_PLAN_ACCEPTED) != acc
+            || wc_set_contains(R->accepted, g) != acc
+            || W->in_goal != ref_plan_goal_contains(P, g))
+            fail_g(P, "four fixels", g, "the complete plan disagrees with "
+                   "the oracle");
+    }
+    for (k = 0; k < 3; k++)
+        fmpq_clear(g + k);
+    wc_error_clear(err);
+    wc_plan_wrench_clear(W);
+    wc_plan_clear(R);
+    wc_problem_clear(P);
+}
+
 static void
 test_errors(void)
 {
@@ -872,6 +977,7 @@ main(void)
     test_errors();
     test_disk();
     test_three();
+    test_complete4();
 
     iters = wctest_iters(40);
     for (i = 0; i < iters; i++)
