@@ -162,10 +162,8 @@ wc_plan_strings(wc_plan_strings_t T, slong n, wc_error_t err)
                 if (s[k] == 's')
                     smask |= UWORD(1) << k;
             T->contained_in[i] = -1;
-            /* the smallest R first (by popcount, then value) would need
-               sorting; ascending values try every single letter before
-               any pair of higher letters, which is all that matters for
-               a deterministic report */
+            /* the submasks R of smask in increasing order, so that the
+               string reported as containing it is always the same */
             for (R = 1; R <= smask && T->contained_in[i] < 0; R++)
             {
                 if ((R & smask) != R)
