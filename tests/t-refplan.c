@@ -304,24 +304,30 @@ check_strings(void)
     char ** x;
     slong count, n, pow2 = 1, pow3 = 1;
 
-    x = ref_plan_strings(&count, 1, 0);
-    expect_list(x, count, all1, 1, "all strings, n = 1");
-    ref_plan_strings_free(x, count);
-    x = ref_plan_strings(&count, 1, 1);
-    expect_list(x, count, all1, 1, "needed strings, n = 1");
-    ref_plan_strings_free(x, count);
-    x = ref_plan_strings(&count, 2, 0);
-    expect_list(x, count, all2, 5, "all strings, n = 2");
-    ref_plan_strings_free(x, count);
-    x = ref_plan_strings(&count, 2, 1);
-    expect_list(x, count, needed2, 4, "needed strings, n = 2");
-    ref_plan_strings_free(x, count);
-    x = ref_plan_strings(&count, 3, 0);
-    expect_list(x, count, all3, 19, "all strings, n = 3");
-    ref_plan_strings_free(x, count);
-    x = ref_plan_strings(&count, 3, 1);
-    expect_list(x, count, needed3, 12, "needed strings, n = 3");
-    ref_plan_strings_free(x, count);
+    {
+        /* n, needed only, the list */
+        static const struct
+        {
+            slong n;
+            int needed;
+            const char * const * want;
+            slong count;
+        }
+        lists[6] = { { 1, 0, all1, 1 }, { 1, 1, all1, 1 },
+                     { 2, 0, all2, 5 }, { 2, 1, needed2, 4 },
+                     { 3, 0, all3, 19 }, { 3, 1, needed3, 12 } };
+        char what[64];
+        slong i;
+
+        for (i = 0; i < 6; i++)
+        {
+            x = ref_plan_strings(&count, lists[i].n, lists[i].needed);
+            snprintf(what, sizeof what, "%s strings, n = %ld",
+                     lists[i].needed ? "needed" : "all", (long) lists[i].n);
+            expect_list(x, count, lists[i].want, lists[i].count, what);
+            ref_plan_strings_free(x, count);
+        }
+    }
 
     for (n = 1; n <= 6; n++)
     {
