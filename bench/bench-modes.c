@@ -32,7 +32,7 @@
 #include <flint/fmpq.h>
 
 #include "wrenchcone.h"
-#include "kinematics.h"
+#include "analysis/kinematics.h"
 #include "ref-kin.h"
 
 static double

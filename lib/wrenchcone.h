@@ -12,22 +12,22 @@
 #ifndef WRENCHCONE_H
 #define WRENCHCONE_H
 
-#include "error.h"
-#include "problem.h"
-#include "mode.h"
-#include "model.h"
-#include "cone.h"
-#include "wrench.h"
-#include "kinematics.h"
-#include "verify.h"
-#include "random.h"
-#include "print.h"
-#include "floatcone.h"
-#include "compare.h"
-#include "cells.h"
-#include "push.h"
-#include "stability.h"
-#include "plan.h"
+#include "core/error.h"
+#include "core/problem.h"
+#include "model/mode.h"
+#include "model/model.h"
+#include "exact/cone.h"
+#include "analysis/wrench.h"
+#include "analysis/kinematics.h"
+#include "check/verify.h"
+#include "core/random.h"
+#include "io/print.h"
+#include "float/floatcone.h"
+#include "float/compare.h"
+#include "exact/cells.h"
+#include "analysis/push.h"
+#include "analysis/stability.h"
+#include "analysis/plan.h"
 
 #ifdef __cplusplus
 extern "C" {

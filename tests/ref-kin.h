@@ -23,7 +23,7 @@
 #include <flint/fmpz.h>
 #include <flint/fmpz_mat.h>
 
-#include "problem.h"
+#include "core/problem.h"
 
 #ifdef __cplusplus
 extern "C" {

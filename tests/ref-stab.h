@@ -21,7 +21,7 @@
 
 #include <flint/fmpq.h>
 
-#include "problem.h"
+#include "core/problem.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -20,7 +20,7 @@
 #include <flint/fmpq_vec.h>
 
 #include "wrenchcone.h"
-#include "compare.h"
+#include "float/compare.h"
 #include "testutil.h"
 
 #define ROW(A, i) ((A)->rows[i])

@@ -19,7 +19,7 @@
 
 #include "wrenchcone.h"
 #include "testutil.h"
-#include "cddbridge.h"
+#include "exact/cddbridge.h"
 
 #include <cddlib/setoper.h>
 #include <cddlib/cdd.h>

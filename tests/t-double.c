@@ -41,7 +41,7 @@
 #include <string.h>
 
 #include "wrenchcone.h"
-#include "random.h"
+#include "core/random.h"
 #include "testutil.h"
 
 static const char section4[] =

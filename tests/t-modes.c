@@ -30,7 +30,7 @@
 #include <flint/fmpz_vec.h>
 
 #include "wrenchcone.h"
-#include "kinematics.h"
+#include "analysis/kinematics.h"
 #include "ref-kin.h"
 #include "testutil.h"
 

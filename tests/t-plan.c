@@ -23,7 +23,7 @@
 #include <flint/fmpq_mat.h>
 
 #include "wrenchcone.h"
-#include "plan.h"
+#include "analysis/plan.h"
 #include "ref-lp.h"
 #include "ref-stab.h"
 #include "ref-plan.h"

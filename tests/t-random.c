@@ -25,7 +25,7 @@
 #include <string.h>
 
 #include "wrenchcone.h"
-#include "random.h"
+#include "core/random.h"
 #include "testutil.h"
 
 /* ------------------------------------------------------------------ */

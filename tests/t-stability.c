@@ -33,8 +33,8 @@
 #include <flint/fmpz_mat.h>
 
 #include "wrenchcone.h"
-#include "stability.h"
-#include "cells.h"
+#include "analysis/stability.h"
+#include "exact/cells.h"
 #include "ref-lp.h"
 #include "ref-kin.h"
 #include "ref-stab.h"

@@ -22,8 +22,8 @@
 #include <string.h>
 
 #include "wrenchcone.h"
-#include "json.h"
-#include "verify.h"
+#include "core/json.h"
+#include "check/verify.h"
 #include "testutil.h"
 
 static int failures = 0;
@@ -136,9 +136,9 @@ test_json_good(void)
     const wc_json_node * r, * a, * b, * v;
     int status;
 
-    wc_json_init(J);
+    _wc_json_init(J);
     wc_error_init(e);
-    status = wc_json_parse(J, doc, sizeof doc - 1, "doc", e);
+    status = _wc_json_parse(J, doc, sizeof doc - 1, "doc", e);
     if (status != WC_OK)
     {
         FAIL("good document: status %d (%s)", status, e->message);
@@ -148,68 +148,68 @@ test_json_good(void)
     node_is(__LINE__, r, WC_JSON_OBJECT, 1, 1);
     if (r->len != 5)
         FAIL("root has %lu members", (unsigned long) r->len);
-    node_is(__LINE__, wc_json_object_key(r, 0), WC_JSON_STRING, 1, 2);
-    a = wc_json_object_get(r, "a");
+    node_is(__LINE__, _wc_json_object_key(r, 0), WC_JSON_STRING, 1, 2);
+    a = _wc_json_object_get(r, "a");
     node_is(__LINE__, a, WC_JSON_ARRAY, 1, 7);
     if (a != NULL && a->len != 3)
         FAIL("a has %lu elements", (unsigned long) a->len);
-    v = wc_json_array_get(a, 0);
+    v = _wc_json_array_get(a, 0);
     node_is(__LINE__, v, WC_JSON_NUMBER, 1, 8);
     text_is(__LINE__, v, "1", 1);
-    v = wc_json_array_get(a, 1);
+    v = _wc_json_array_get(a, 1);
     node_is(__LINE__, v, WC_JSON_NUMBER, 1, 11);
     text_is(__LINE__, v, "-2.5e3", 6);
-    v = wc_json_array_get(a, 2);
+    v = _wc_json_array_get(a, 2);
     node_is(__LINE__, v, WC_JSON_STRING, 1, 19);
     text_is(__LINE__, v, "x", 1);
-    if (wc_json_array_get(a, 3) != NULL)
+    if (_wc_json_array_get(a, 3) != NULL)
         FAIL("element past the end");
-    b = wc_json_object_get(r, "b");
+    b = _wc_json_object_get(r, "b");
     node_is(__LINE__, b, WC_JSON_OBJECT, 2, 7);
-    node_is(__LINE__, wc_json_object_key(b, 0), WC_JSON_STRING, 2, 8);
-    node_is(__LINE__, wc_json_object_get(b, "c"), WC_JSON_NULL, 2, 13);
-    node_is(__LINE__, wc_json_object_get(b, "d"), WC_JSON_TRUE, 2, 24);
-    node_is(__LINE__, wc_json_object_get(b, "e"), WC_JSON_FALSE, 2, 35);
-    node_is(__LINE__, wc_json_object_value(b, 2), WC_JSON_FALSE, 2, 35);
-    if (wc_json_object_get(b, "f") != NULL || wc_json_object_get(a, "a")
-        != NULL || wc_json_object_value(b, 3) != NULL)
+    node_is(__LINE__, _wc_json_object_key(b, 0), WC_JSON_STRING, 2, 8);
+    node_is(__LINE__, _wc_json_object_get(b, "c"), WC_JSON_NULL, 2, 13);
+    node_is(__LINE__, _wc_json_object_get(b, "d"), WC_JSON_TRUE, 2, 24);
+    node_is(__LINE__, _wc_json_object_get(b, "e"), WC_JSON_FALSE, 2, 35);
+    node_is(__LINE__, _wc_json_object_value(b, 2), WC_JSON_FALSE, 2, 35);
+    if (_wc_json_object_get(b, "f") != NULL || _wc_json_object_get(a, "a")
+        != NULL || _wc_json_object_value(b, 3) != NULL)
         FAIL("lookup of what is not there");
-    v = wc_json_object_get(r, "");
+    v = _wc_json_object_get(r, "");
     node_is(__LINE__, v, WC_JSON_STRING, 3, 5);
     text_is(__LINE__, v, decoded, sizeof decoded - 1);
-    v = wc_json_object_get(r, "\xc3\xa9");
+    v = _wc_json_object_get(r, "\xc3\xa9");
     node_is(__LINE__, v, WC_JSON_ARRAY, 3, 56);
     if (v != NULL && (v->len != 0 || v->items != NULL))
         FAIL("empty array not empty");
-    v = wc_json_object_get(r, "o");
+    v = _wc_json_object_get(r, "o");
     node_is(__LINE__, v, WC_JSON_OBJECT, 3, 65);
     if (v != NULL && v->len != 0)
         FAIL("empty object not empty");
 
     /* scalars alone; parsing again replaces the document */
-    if (wc_json_parse(J, " -0 ", 4, "doc", e) != WC_OK)
+    if (_wc_json_parse(J, " -0 ", 4, "doc", e) != WC_OK)
         FAIL("-0: %s", e->message);
     node_is(__LINE__, &J->root, WC_JSON_NUMBER, 1, 2);
     text_is(__LINE__, &J->root, "-0", 2);
-    if (wc_json_parse(J, "\"\"", 2, "doc", e) != WC_OK)
+    if (_wc_json_parse(J, "\"\"", 2, "doc", e) != WC_OK)
         FAIL("empty string: %s", e->message);
     text_is(__LINE__, &J->root, "", 0);
-    if (wc_json_parse(J, "0.5E+10", 7, NULL, e) != WC_OK
-        || wc_json_parse(J, "1e-7", 4, NULL, e) != WC_OK
-        || wc_json_parse(J, "[[], {}, [{}]]", 14, NULL, e) != WC_OK
-        || wc_json_parse(J, "\t\r\n null \n", 10, NULL, e) != WC_OK)
+    if (_wc_json_parse(J, "0.5E+10", 7, NULL, e) != WC_OK
+        || _wc_json_parse(J, "1e-7", 4, NULL, e) != WC_OK
+        || _wc_json_parse(J, "[[], {}, [{}]]", 14, NULL, e) != WC_OK
+        || _wc_json_parse(J, "\t\r\n null \n", 10, NULL, e) != WC_OK)
         FAIL("good scalar: %s", e->message);
     node_is(__LINE__, &J->root, WC_JSON_NULL, 2, 2);
     /* keys that differ only after a NUL are different keys */
-    if (wc_json_parse(J, "{\"a\\u0000b\": 1, \"a\\u0000c\": 2, \"a\": 3}", 38,
+    if (_wc_json_parse(J, "{\"a\\u0000b\": 1, \"a\\u0000c\": 2, \"a\": 3}", 38,
                       NULL, e) != WC_OK)
         FAIL("keys with NUL: %s", e->message);
-    else if ((v = wc_json_object_get(&J->root, "a")) == NULL
+    else if ((v = _wc_json_object_get(&J->root, "a")) == NULL
              || strcmp(v->text, "3") != 0)
         FAIL("key 'a' not found among keys with NULs");
 cleanup:
-    wc_json_clear(J);
-    wc_json_clear(J);   /* clear is safe twice */
+    _wc_json_clear(J);
+    _wc_json_clear(J);   /* clear is safe twice */
     wc_error_clear(e);
 }
 
@@ -224,9 +224,9 @@ json_bad_n(int line, const char * text, size_t len, const char * expect)
     char * got;
     int status;
 
-    wc_json_init(J);
+    _wc_json_init(J);
     wc_error_init(e);
-    status = wc_json_parse(J, text, len, "f", e);
+    status = _wc_json_parse(J, text, len, "f", e);
     got = wc_error_format(e);
     if (status != WC_EINPUT)
         fail(line, "status %d, expected %d (%s)", status, WC_EINPUT,
@@ -237,7 +237,7 @@ json_bad_n(int line, const char * text, size_t len, const char * expect)
         || J->arena != NULL)
         fail(line, "document not empty after an error");
     free(got);
-    wc_json_clear(J);
+    _wc_json_clear(J);
     wc_error_clear(e);
 }
 
@@ -360,7 +360,7 @@ test_json_limits(void)
     size_t n, i;
     int status;
 
-    wc_json_init(J);
+    _wc_json_init(J);
     wc_error_init(e);
 
     /* 64 levels are fine, 65 are not, however deep the input goes */
@@ -368,7 +368,7 @@ test_json_limits(void)
     t = repeat("]", WC_JSON_MAX_DEPTH);
     u = xmalloc(2 * WC_JSON_MAX_DEPTH + 1);
     sprintf(u, "%s%s", s, t);
-    if (wc_json_parse(J, u, strlen(u), "f", e) != WC_OK)
+    if (_wc_json_parse(J, u, strlen(u), "f", e) != WC_OK)
         FAIL("64 levels: %s", e->message);
     free(s);
     free(t);
@@ -387,16 +387,16 @@ test_json_limits(void)
     s = repeat("[0,\"abc\",{\"k\":-1.5}],", n);
     t = xmalloc(strlen(s) + 4);
     sprintf(t, "[%s0]", s);
-    status = wc_json_parse(J, t, strlen(t), "f", e);
+    status = _wc_json_parse(J, t, strlen(t), "f", e);
     if (status != WC_OK || J->root.len != n + 1)
         FAIL("long document: status %d", status);
     else
     {
-        const wc_json_node * v = wc_json_array_get(&J->root, n - 1);
+        const wc_json_node * v = _wc_json_array_get(&J->root, n - 1);
 
-        node_is(__LINE__, wc_json_array_get(v, 2), WC_JSON_OBJECT, 1,
+        node_is(__LINE__, _wc_json_array_get(v, 2), WC_JSON_OBJECT, 1,
                 (long) (n - 1) * 21 + 11);
-        text_is(__LINE__, wc_json_object_get(wc_json_array_get(v, 2), "k"),
+        text_is(__LINE__, _wc_json_object_get(_wc_json_array_get(v, 2), "k"),
                 "-1.5", 4);
     }
     free(s);
@@ -409,7 +409,7 @@ test_json_limits(void)
     s[300000] = ']';
     s[300001] = '\0';
     s[1] = '"';
-    if (wc_json_parse(J, s, 300001, "f", e) != WC_OK || J->root.len != 3
+    if (_wc_json_parse(J, s, 300001, "f", e) != WC_OK || J->root.len != 3
         || J->root.items[0].len != 99997 || J->root.items[2].len != 99997)
         FAIL("long strings: %s", e->message);
     free(s);
@@ -422,7 +422,7 @@ test_json_limits(void)
         n += (size_t) sprintf(s + n, "\"k%lu\":%lu,", (unsigned long) i,
                               (unsigned long) i);
     n += (size_t) sprintf(s + n, "\"k77\":0}");
-    status = wc_json_parse(J, s, n, "f", e);
+    status = _wc_json_parse(J, s, n, "f", e);
     if (status != WC_EINPUT || e->message == NULL
         || strcmp(e->message, "duplicate key 'k77'") != 0
         || e->col != (long) n - 7)
@@ -440,7 +440,7 @@ test_json_limits(void)
     {
         size_t len = (size_t) wctest_randint(0, (slong) n);
 
-        if (wc_json_parse(J, s + (i % 2), len - (len > 0 && i % 2), "f", e)
+        if (_wc_json_parse(J, s + (i % 2), len - (len > 0 && i % 2), "f", e)
             != WC_EINPUT)
             FAIL("garbage parsed");
     }
@@ -451,12 +451,12 @@ test_json_limits(void)
     {
         size_t len = (size_t) wctest_randint(0, (slong) n);
 
-        status = wc_json_parse(J, s, len, "f", e);
+        status = _wc_json_parse(J, s, len, "f", e);
         if (status != WC_EINPUT && status != WC_OK)
             FAIL("JSON characters: status %d", status);
     }
     free(s);
-    wc_json_clear(J);
+    _wc_json_clear(J);
     wc_error_clear(e);
 }
 

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "problem.h"
+#include "core/problem.h"
 #include "testutil.h"
 
 #define WCTEST_DEFAULT_SEED UINT64_C(20021212)

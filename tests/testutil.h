@@ -22,7 +22,7 @@
 #include <flint/flint.h>
 #include <flint/fmpq.h>
 
-#include "problem.h"
+#include "core/problem.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -1,0 +1,19 @@
+# lib/analysis -- the analyses: the two exact routes to a mode's wrench
+# cone, modes and feasibility, classification, stability sets, pushing
+# regions, insertion plans.
+
+lib_libwc_la_SOURCES += \
+	lib/analysis/direct.c \
+	lib/analysis/paper.c \
+	lib/analysis/trace.c \
+	lib/analysis/kinematics.c \
+	lib/analysis/push.c \
+	lib/analysis/stability.c \
+	lib/analysis/plan.c
+wcanalysisdir = $(pkgincludedir)/analysis
+wcanalysis_HEADERS = \
+	lib/analysis/wrench.h \
+	lib/analysis/kinematics.h \
+	lib/analysis/push.h \
+	lib/analysis/stability.h \
+	lib/analysis/plan.h

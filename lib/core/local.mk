@@ -1,0 +1,16 @@
+# lib/core -- errors, the problem and its reader, numbers, JSON reading,
+# reproducible random problems, versions.
+
+lib_libwc_la_SOURCES += \
+	lib/core/error.c \
+	lib/core/problem.c \
+	lib/core/random.c \
+	lib/core/json.c \
+	lib/core/version.c
+wccoredir = $(pkgincludedir)/core
+wccore_HEADERS = \
+	lib/core/error.h \
+	lib/core/problem.h \
+	lib/core/random.h
+noinst_HEADERS += \
+	lib/core/json.h

@@ -1,0 +1,15 @@
+# lib/exact -- exact polyhedral geometry: the NNC cone type, the 3-D
+# kernel, the cddlib bridge, arrangements of central planes and their cells.
+
+lib_libwc_la_SOURCES += \
+	lib/exact/cone.c \
+	lib/exact/cddbridge.c \
+	lib/exact/hull3.c \
+	lib/exact/cells.c
+wcexactdir = $(pkgincludedir)/exact
+wcexact_HEADERS = \
+	lib/exact/cone.h \
+	lib/exact/cells.h
+noinst_HEADERS += \
+	lib/exact/cddbridge.h \
+	lib/exact/hull3.h

@@ -1,0 +1,9 @@
+# lib/io -- the printers: every result as text, JSON or cdd.
+
+lib_libwc_la_SOURCES += \
+	lib/io/print.c \
+	lib/io/stabprint.c \
+	lib/io/planprint.c
+wciodir = $(pkgincludedir)/io
+wcio_HEADERS = \
+	lib/io/print.h

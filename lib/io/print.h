@@ -1,0 +1,80 @@
+/* print.h -- writers: readable text, canonical JSON (SPEC 4.1), cddlib.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Writers write only to the stream they are given.  Each returns WC_OK,
+   or WC_EINTERNAL when the stream reports an error.  */
+
+#ifndef WC_PRINT_H
+#define WC_PRINT_H
+
+#include <stdio.h>
+
+#include "exact/cone.h"
+#include "analysis/wrench.h"
+#include "analysis/kinematics.h"
+#include "core/problem.h"
+#include "analysis/stability.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A rational as text, "p/q" or "p" in lowest terms.  */
+void wc_fprint_fmpq(FILE * out, const fmpq_t x);
+
+/* A vector of len rationals: "(a, b, c)" as text, or ["a", "b", "c"] as
+   JSON.  */
+void wc_fprint_qvec(FILE * out, const fmpq * v, slong len, int json);
+
+/* s as a JSON string literal, with quotes and escapes.  */
+void wc_fprint_json_string(FILE * out, const char * s);
+
+/* The CONE object of SPEC 4.1, on one line, no newline.  */
+int wc_cone_fprint_json(FILE * out, const wc_cone_t C);
+
+/* A readable description of C, each line starting with indent.  */
+int wc_cone_fprint_text(FILE * out, const wc_cone_t C, const char * indent);
+
+/* C in cddlib's format with rationals: which = 1 the H-representation
+   (.ine) of the closure, 2 the V-representation (.ext), 3 both, H first.
+   Strictness, which cdd files cannot express, is given in comment lines
+   (starting with '*') before the representations; title goes there too.  */
+int wc_cone_fprint_cdd(FILE * out, const wc_cone_t C, const char * title,
+                       int which);
+
+/* A trace as text (each line starting with prefix) or as a JSON array
+   of {"name", "note", "rows", "cols", "matrix"} objects.  */
+int wc_trace_fprint_text(FILE * out, const wc_trace_t T, const char * prefix);
+int wc_trace_fprint_json(FILE * out, const wc_trace_t T);
+
+/* The feasible modes: text (one per line, with the witness twist when
+   witness is set) or JSON {"fixels", "modes", "count"[, "witnesses"]}.  */
+int wc_modes_fprint(FILE * out, const wc_modes_t M, int json, int witness);
+
+/* A mode's certificate: text for people, or the self-contained JSON that
+   wrenchcone verify checks: {"kind": "mode-feasibility", "mode",
+   "feasible", "witness" | "multipliers", "constraints", "problem"}.  */
+int wc_certificate_fprint(FILE * out, const wc_certificate_t C,
+                          const wc_problem_t P, int json);
+
+/* classify and stability (stabprint.c).  JSON as SPEC 4.1, with extra
+   keys: classify adds "static_c" or "separator", and "paper_witness";
+   stability adds "paper_in_weak", "semantics_differ" and
+   "difference_witness".  A set is {"empty", "interior", "pieces"}.  */
+int wc_classify_fprint(FILE * out, const wc_classify_t R, int json);
+int wc_set_fprint_json(FILE * out, const wc_set_t S);
+int wc_set_fprint_text(FILE * out, const wc_set_t S, const char * indent);
+int wc_push_fprint(FILE * out, const wc_push_t R, int json,
+                   const char * indent);
+/* json: 0 text, 1 a JSON object and a newline, 2 the same object left
+   open (no closing brace) for the caller to add members to.  */
+int wc_stability_fprint(FILE * out, const wc_stability_t S, int json);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

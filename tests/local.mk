@@ -1,0 +1,56 @@
+# tests -- C unit and cross-check tests, the independent references they
+# compare with, and shell tests of the program.  Everything links the
+# convenience library statically: no libtool wrapper between the harness
+# and the program under test.
+
+check_LTLIBRARIES += tests/libwctest.la
+tests_libwctest_la_SOURCES = \
+	tests/testutil.c tests/testutil.h \
+	tests/ref-lp.c tests/ref-lp.h \
+	tests/ref-kin.c tests/ref-kin.h \
+	tests/ref-stab.c tests/ref-stab.h \
+	tests/ref-plan.c tests/ref-plan.h
+
+TEST_LIBS = tests/libwctest.la lib/libwc.la
+C_TESTS = \
+	tests/t-ref \
+	tests/t-parse \
+	tests/t-model \
+	tests/t-cone \
+	tests/t-routes \
+	tests/t-modes \
+	tests/t-verify \
+	tests/t-random \
+	tests/t-double \
+	tests/t-compare \
+	tests/t-cells \
+	tests/t-push \
+	tests/t-stability \
+	tests/t-refplan \
+	tests/t-plan
+check_PROGRAMS += $(C_TESTS) tests/corpus-check
+LDADD = $(TEST_LIBS)
+tests_corpus_check_LDADD = lib/libwc.la
+
+SH_TESTS = \
+	tests/cli-cone.sh \
+	tests/cli-errors.sh \
+	tests/cli-verify.sh \
+	tests/cli-double.sh \
+	tests/cli-compare.sh \
+	tests/cli-stability.sh \
+	tests/cli-plan.sh \
+	tests/corpus.sh \
+	tests/contract.sh \
+	tests/man-examples.sh
+TESTS += $(C_TESTS) $(SH_TESTS)
+TEST_EXTENSIONS = .sh
+SH_LOG_COMPILER = $(SHELL)
+AM_TESTS_ENVIRONMENT = \
+	WRENCHCONE='$(abs_top_builddir)/src/wrenchcone'; \
+	top_srcdir='$(abs_top_srcdir)'; \
+	LSAN_OPTIONS="suppressions=$(abs_top_srcdir)/tests/lsan.supp:print_suppressions=0$${LSAN_OPTIONS:+:$$LSAN_OPTIONS}"; \
+	export WRENCHCONE top_srcdir LSAN_OPTIONS;
+
+EXTRA_DIST += $(SH_TESTS) tests/bad tests/golden tests/certs tests/lsan.supp \
+	tests/update-golden.py
