@@ -2,6 +2,7 @@
 # kernel, the cddlib bridge, arrangements of central planes and their cells.
 
 lib_libwc_la_SOURCES += \
+	lib/exact/vec3.c \
 	lib/exact/cone.c \
 	lib/exact/cddbridge.c \
 	lib/exact/hull3.c \
@@ -11,5 +12,6 @@ wcexact_HEADERS = \
 	lib/exact/cone.h \
 	lib/exact/cells.h
 noinst_HEADERS += \
+	lib/exact/vec3.h \
 	lib/exact/cddbridge.h \
 	lib/exact/hull3.h

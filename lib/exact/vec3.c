@@ -1,0 +1,40 @@
+/* vec3.c -- exact 3-vectors.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.  */
+
+#include <config.h>
+
+#include "exact/vec3.h"
+
+void
+_wc_zvec3_cross(fmpz * c, const fmpz * a, const fmpz * b)
+{
+    fmpz_mul(c + 0, a + 1, b + 2);
+    fmpz_submul(c + 0, a + 2, b + 1);
+    fmpz_mul(c + 1, a + 2, b + 0);
+    fmpz_submul(c + 1, a + 0, b + 2);
+    fmpz_mul(c + 2, a + 0, b + 1);
+    fmpz_submul(c + 2, a + 1, b + 0);
+}
+
+void
+_wc_qvec3_cross(fmpq * c, const fmpq * a, const fmpq * b)
+{
+    fmpq_mul(c + 0, a + 1, b + 2);
+    fmpq_submul(c + 0, a + 2, b + 1);
+    fmpq_mul(c + 1, a + 2, b + 0);
+    fmpq_submul(c + 1, a + 0, b + 2);
+    fmpq_mul(c + 2, a + 0, b + 1);
+    fmpq_submul(c + 2, a + 1, b + 0);
+}
+
+int
+_wc_zvec3_dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t)
+{
+    fmpz_mul(t, a + 0, b + 0);
+    fmpz_addmul(t, a + 1, b + 1);
+    fmpz_addmul(t, a + 2, b + 2);
+    return fmpz_sgn(t);
+}

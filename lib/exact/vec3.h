@@ -1,0 +1,27 @@
+/* vec3.h -- internal: exact 3-vectors (wrenches, twists, plane normals),
+   the small operations every layer above needs once.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Not installed.  A 3-vector is three consecutive entries (fmpz or fmpq),
+   as in a row of a FLINT matrix with three columns.  */
+
+#ifndef WC_EXACT_VEC3_H
+#define WC_EXACT_VEC3_H
+
+#include <flint/fmpz.h>
+#include <flint/fmpq.h>
+
+/* Row i of a FLINT matrix (fmpz_mat, fmpq_mat), as a vector.  */
+#define WC_ROW(A, i) ((A)->rows[i])
+
+/* c := a x b.  c must not alias a or b.  */
+void _wc_zvec3_cross(fmpz * c, const fmpz * a, const fmpz * b);
+void _wc_qvec3_cross(fmpq * c, const fmpq * a, const fmpq * b);
+
+/* The sign of a . b; t is scratch.  */
+int _wc_zvec3_dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t);
+
+#endif
