@@ -42,15 +42,26 @@ SH_TESTS = \
 	tests/cli-plan.sh \
 	tests/corpus.sh \
 	tests/contract.sh \
-	tests/man-examples.sh
+	tests/man-examples.sh \
+	tests/man-lint.sh \
+	tests/cdd-interop.sh \
+	tests/layers.sh \
+	tests/install.sh
 TESTS += $(C_TESTS) $(SH_TESTS)
 TEST_EXTENSIONS = .sh
 SH_LOG_COMPILER = $(SHELL)
 AM_TESTS_ENVIRONMENT = \
 	WRENCHCONE='$(abs_top_builddir)/src/wrenchcone'; \
 	top_srcdir='$(abs_top_srcdir)'; \
+	top_builddir='$(abs_top_builddir)'; \
+	CC='$(CC)'; WC_SAN='$(WC_SAN)'; MAKE='$(MAKE)'; \
 	LSAN_OPTIONS="suppressions=$(abs_top_srcdir)/tests/lsan.supp:print_suppressions=0$${LSAN_OPTIONS:+:$$LSAN_OPTIONS}"; \
-	export WRENCHCONE top_srcdir LSAN_OPTIONS;
+	export WRENCHCONE top_srcdir top_builddir CC WC_SAN MAKE LSAN_OPTIONS;
 
 EXTRA_DIST += $(SH_TESTS) tests/bad tests/golden tests/certs tests/lsan.supp \
-	tests/update-golden.py
+	tests/update-golden.py tests/install
+
+# The C tests' names, for running them alone (.ci/run widens them).
+print-c-tests:
+	@echo $(C_TESTS)
+.PHONY: print-c-tests

@@ -1,5 +1,5 @@
 #!/bin/sh
-# man-examples.sh -- run the examples of the manual pages, and lint them.
+# man-examples.sh -- run the examples of the manual pages.
 #
 # Copyright (C) 2026 the wrenchcone authors.
 # This file is part of wrenchcone, free software under the GNU General
@@ -20,9 +20,7 @@
 # \(aq may appear in those blocks; anything else is an error here rather
 # than a silent mismatch.  man/wrenchcone.1 must hold at least 4 commands.
 #
-# Then both pages must be "mandoc -Tlint" clean (STYLE rule 11): every
-# message fails the test.  Without mandoc that part is skipped, with a note
-# on stderr.
+# tests/man-lint.sh checks that the pages are "mandoc -Tlint" clean.
 #
 # Exit status: 0 pass, 1 fail, 99 the harness did not set WRENCHCONE and
 # top_srcdir (both are exported by AM_TESTS_ENVIRONMENT).
@@ -175,19 +173,6 @@ if [ -f "$page5" ]; then
         failed "malformed EXAMPLES in $page5"
     fi
     run_examples "$tmp/ex5" "${n5:-0}"
-fi
-
-# Lint.  No message is tolerated: the pages are written to be clean.
-if command -v mandoc >/dev/null 2>&1; then
-    if [ -f "$page1" ] && [ -f "$page5" ]; then
-        mandoc -Tlint "$page1" "$page5" >"$tmp/lint" 2>&1
-        if [ -s "$tmp/lint" ]; then
-            failed "mandoc -Tlint reports:"
-            cat "$tmp/lint" >&2
-        fi
-    fi
-else
-    echo "man-examples.sh: mandoc not found; the lint check is skipped" >&2
 fi
 
 exit "$fail"

@@ -1182,7 +1182,7 @@ main(void)
 {
     /* Brute force costs 4^n LPs: many small problems, fewer large ones. */
     static const struct { slong nmin, nmax, iters; } plan[] =
-        { { 1, 4, 230 }, { 5, 5, 50 }, { 6, 6, 20 } };
+        { { 1, 4, 100 }, { 5, 5, 16 }, { 6, 6, 6 } };
     char what[64];
     slong p, i, iters;
 
@@ -1211,7 +1211,7 @@ main(void)
         }
     }
 
-    iters = wctest_iters(180);
+    iters = wctest_iters(60);
     for (i = 0; i < iters; i++)
     {
         wc_problem_t P;
@@ -1233,7 +1233,7 @@ main(void)
     /* Generic positions with large numerators and denominators: long
        primitive rows, and witnesses whose size the chamber step must get
        right.  */
-    iters = wctest_iters(30);
+    iters = wctest_iters(12);
     for (i = 0; i < iters; i++)
     {
         wc_problem_t P;

@@ -979,7 +979,7 @@ main(void)
     test_three();
     test_complete4();
 
-    iters = wctest_iters(40);
+    iters = wctest_iters(12);
     for (i = 0; i < iters; i++)
     {
         wc_problem_t P;
@@ -990,7 +990,7 @@ main(void)
         wctest_random_problem(P, 1, 3);
         snprintf(what, sizeof what, "random problem, n = %ld", (long) P->n);
         check_problem(P, what, i % 2 == 0, 6);
-        if (i % 8 == 0)
+        if (i % 4 == 0)
             check_critical(P, what);
         wc_problem_clear(P);
     }

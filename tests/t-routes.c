@@ -318,7 +318,7 @@ main(void)
     slong iters, i, k;
 
     wctest_init("t-routes");
-    iters = wctest_iters(300);
+    iters = wctest_iters(100);
     for (i = 0; i < iters; i++)
     {
         wc_problem_t P;
