@@ -83,8 +83,8 @@ _wc_box_list_clear(_wc_box_list_t B)
 
 /* A new box with sets T holding the member cells among idx[0 .. len).  */
 static void
-box_list_add(_wc_box_list_struct * B, const unsigned char * T, const slong * idx,
-             slong len, const int * member)
+box_list_add(_wc_box_list_struct * B, const unsigned char * T,
+             const slong * idx, slong len, const int * member)
 {
     slong m = B->m, b = B->n, i, q;
 
@@ -118,8 +118,8 @@ box_list_add(_wc_box_list_struct * B, const unsigned char * T, const slong * idx
    unite to a convex set.  tab (size slots, a power of two, at least twice
    nalive), next and last: scratch.  Returns the number of merges.  */
 static slong
-merge_plane(_wc_box_list_struct * B, slong p, slong * tab, slong size, slong * next,
-            slong * last)
+merge_plane(_wc_box_list_struct * B, slong p, slong * tab, slong size,
+            slong * next, slong * last)
 {
     slong m = B->m, i, j, c, merged = 0;
 
@@ -670,7 +670,8 @@ strict_rows(fmpq_mat_t S, const wc_cells_t A, const unsigned char * set,
         for (j = 0; j < k; j++)
             if (_wc_zvec3_dot_sgn(WC_ROW(A->planes, st[i]),
                                   WC_ROW(C0->rays, j), t) == 0)
-                bits[i * words + j / FLINT_BITS] |= UWORD(1) << (j % FLINT_BITS);
+                bits[i * words + j / FLINT_BITS]
+                    |= UWORD(1) << (j % FLINT_BITS);
     for (i = 0; i < ns; i++)
     {
         /* Drop i when some j vanishes on more rays, or on the same rays

@@ -88,7 +88,8 @@ _wc_incidence_build(_wc_incidence_t I, const wc_cells_t A)
     for (i = 0; i < count; i++)
         if (A->dim[i] >= 2)
         {
-            h[i] = _wc_hash_bytes((const unsigned char *) (A->sign + i * m), m);
+            h[i] = _wc_hash_bytes((const unsigned char *) (A->sign + i * m),
+                                  m);
             for (j = (slong) (h[i] & (size - 1)); slot[j] >= 0;
                  j = (j + 1) & (size - 1))
                 ;
@@ -119,7 +120,8 @@ _wc_incidence_build(_wc_incidence_t I, const wc_cells_t A)
             {
                 if (s[p] != 0)
                     continue;
-                _wc_zvec3_cross(d, WC_ROW(A->planes, p), WC_ROW(A->point, i));
+                _wc_zvec3_cross(d, WC_ROW(A->planes, p),
+                                WC_ROW(A->point, i));
                 for (side = -1; side <= 1; side += 2)
                 {
                     slong c;
@@ -127,8 +129,8 @@ _wc_incidence_build(_wc_incidence_t I, const wc_cells_t A)
                     memcpy(t, s, m);
                     for (q = 0; q < m; q++)
                         if (s[q] == 0 && q != p)
-                            t[q] = (signed char)
-                                (side * _wc_zvec3_dot_sgn(WC_ROW(A->planes, q), d, x));
+                            t[q] = (signed char) (side * _wc_zvec3_dot_sgn(
+                                WC_ROW(A->planes, q), d, x));
                     c = find_cell(A, slot, size, h, t, 2);
                     if (c < 0)
                     {

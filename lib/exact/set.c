@@ -312,7 +312,8 @@ try_merge(wc_cone_t N, const wc_cone_t A, const wc_cone_t B,
                 fmpq_add_fmpz(g + k, g + k,
                               fmpz_mat_entry(N->rays, F->rays[j], k));
         }
-        N->faces[f].included = wc_cone_contains(A, g) || wc_cone_contains(B, g);
+        N->faces[f].included = wc_cone_contains(A, g)
+            || wc_cone_contains(B, g);
     }
     *ok = 1;
     /* an up-set: no excluded face above an included one */
