@@ -489,51 +489,55 @@ wc_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
 slong
 wc_cells_plane_index(const wc_cells_t A, const fmpz * h)
 {
-    slong lo = 0, hi = A->nplanes, r = -1;
+    slong r = -1;
     fmpz * v = _fmpz_vec_init(3);
+    fmpz * const * hit = NULL;
     fmpz_t t;
 
     fmpz_init(t);
     _fmpz_vec_set(v, h, 3);
-    if (_wc_zvec3_canonical(v, t))
-        while (lo < hi)
-        {
-            slong mid = lo + (hi - lo) / 2;
-            int c = _wc_zvec3_cmp(WC_ROW(A->planes, mid), v);
-
-            if (c == 0)
-            {
-                r = mid;
-                break;
-            }
-            if (c < 0)
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
+    if (_wc_zvec3_canonical(v, t) && A->nplanes > 0)
+        hit = bsearch(&v, A->planes->rows, A->nplanes, sizeof(fmpz *),
+                      vec_ptr_cmp);
+    if (hit != NULL)
+        r = hit - A->planes->rows;
     fmpz_clear(t);
     _fmpz_vec_clear(v, 3);
     return r;
 }
 
-/* Order of cells: dimension, then signs (- < 0 < +).  */
-static int
-cell_cmp(const wc_cells_t A, slong i, slong d, const signed char * s)
+/* A cell to look for: its dimension and signs, among the cells of A.  */
+typedef struct
 {
-    slong m = A->nplanes, q;
+    const wc_cells_struct * A;
+    slong dim;
+    const signed char * sign;
+}
+cell_key;
 
-    if (A->dim[i] != d)
-        return A->dim[i] < d ? -1 : 1;
-    for (q = 0; q < m; q++)
-        if (A->sign[i * m + q] != s[q])
-            return A->sign[i * m + q] < s[q] ? -1 : 1;
+/* Order of cells: dimension, then signs (- < 0 < +).  q points into
+   A->dim.  */
+static int
+cell_key_cmp(const void * p, const void * q)
+{
+    const cell_key * k = p;
+    const wc_cells_struct * A = k->A;
+    slong m = A->nplanes, i = (const slong *) q - A->dim, j;
+
+    if (A->dim[i] != k->dim)
+        return k->dim < A->dim[i] ? -1 : 1;
+    for (j = 0; j < m; j++)
+        if (A->sign[i * m + j] != k->sign[j])
+            return k->sign[j] < A->sign[i * m + j] ? -1 : 1;
     return 0;
 }
 
 slong
 wc_cells_locate(const wc_cells_t A, const fmpq * x)
 {
-    slong m = A->nplanes, lo = 0, hi = A->count, q, j, zeros = 0, d, r = -1;
+    slong m = A->nplanes, q, j, zeros = 0, r = -1;
+    const slong * hit;
+    cell_key key;
     signed char * s;
     fmpz * v;
     fmpz_t den, t;
@@ -563,22 +567,12 @@ wc_cells_locate(const wc_cells_t A, const fmpq * x)
     }
     /* Distinct planes through a nonzero point: one for a sector, two or
        more for a ray.  */
-    d = !nonzero ? 0 : zeros == 0 ? 3 : zeros == 1 ? 2 : 1;
-    while (lo < hi)
-    {
-        slong mid = lo + (hi - lo) / 2;
-        int c = cell_cmp(A, mid, d, s);
-
-        if (c == 0)
-        {
-            r = mid;
-            break;
-        }
-        if (c < 0)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
+    key.A = A;
+    key.dim = !nonzero ? 0 : zeros == 0 ? 3 : zeros == 1 ? 2 : 1;
+    key.sign = s;
+    hit = bsearch(&key, A->dim, A->count, sizeof(slong), cell_key_cmp);
+    if (hit != NULL)
+        r = hit - A->dim;
     flint_free(s);
     _fmpz_vec_clear(v, 3);
     fmpz_clear(den);
