@@ -12,13 +12,12 @@
    feasible set is a union of faces, and it is feasible iff some face's
    sign vector maps to it.  With P distinct planes there are at most
    P (P - 1) rays, as many arcs per plane as rays on it, and two chamber
-   sides per arc: O(n^2) faces.  The walk around each plane keeps the sign
-   vector, the mode letters and a count of penetrated fixels up to date
-   one form at a time (crossing a ray changes only the forms of the planes
-   through it), so a penetrating face costs O(1) and only the others pay
-   O(n) for the exact lookup of their mode: O(n^2 log n + n F) in all
-   (the log from sorting each plane's rays), F the number of
-   non-penetrating faces.  */
+   sides per arc: O(n^2) faces.  The walk around each plane
+   (arrangement.c) reports the planes whose sign changed, and the mode
+   letters and a count of penetrated fixels follow one form at a time, so
+   a penetrating face costs O(1) and only the others pay O(n) for the
+   exact lookup of their mode: O(n^2 log n + n F) in all (the log from
+   sorting each plane's rays), F the number of non-penetrating faces.  */
 
 #include <config.h>
 
@@ -28,9 +27,16 @@
 #include <flint/fmpz_vec.h>
 #include <flint/fmpq_vec.h>
 
-#include "wrenchcone.h"
-#include "analysis/kinematics.h"
+#include "core/error.h"
+#include "core/problem.h"
+#include "model/mode.h"
+#include "model/model.h"
+#include "exact/vec3.h"
+#include "exact/hash.h"
+#include "exact/zvec3set.h"
+#include "exact/arrangement.h"
 #include "exact/cddbridge.h"
+#include "analysis/kinematics.h"
 
 #define ROW(A, i) ((A)->rows[i])
 
@@ -168,22 +174,12 @@ mode_set_clear(mode_set * S)
     fmpz_mat_clear(S->wit);
 }
 
-static ulong
-mode_hash(const char * s, slong n)
-{
-    ulong h = UWORD(1469598103934665603);
-    slong i;
-
-    for (i = 0; i < n; i++)
-        h = (h ^ (unsigned char) s[i]) * UWORD(1099511628211);
-    return h;
-}
-
 /* The slot of mode s: holding it, or empty.  */
 static slong
 mode_set_find(const mode_set * S, const char * s)
 {
-    slong i = (slong) (mode_hash(s, S->n) & (S->size - 1));
+    slong i = (slong) (_wc_hash_bytes((const unsigned char *) s, S->n)
+                       & (S->size - 1));
 
     while (S->slot[i] >= 0
            && memcmp(S->letters + S->slot[i] * (S->n + 1), s, S->n) != 0)
@@ -205,7 +201,7 @@ mode_set_add(mode_set * S, const char * s, const fmpz * w)
         S->letters = flint_realloc(S->letters, S->alloc * (S->n + 1));
         fmpz_mat_init(big, S->alloc, 3);
         for (i = 0; i < S->count; i++)
-            _fmpz_vec_set(ROW(big, i), ROW(S->wit, i), 3);
+            _fmpz_vec_set(WC_ROW(big, i), WC_ROW(S->wit, i), 3);
         fmpz_mat_swap(big, S->wit);
         fmpz_mat_clear(big);
     }
@@ -220,177 +216,106 @@ mode_set_add(mode_set * S, const char * s, const fmpz * w)
     }
     memcpy(S->letters + S->count * (S->n + 1), s, S->n);
     S->letters[S->count * (S->n + 1) + S->n] = '\0';
-    _fmpz_vec_set(ROW(S->wit, S->count), w, 3);
+    _fmpz_vec_set(WC_ROW(S->wit, S->count), w, 3);
     S->slot[mode_set_find(S, s)] = S->count;
     S->count++;
 }
 
-static void
-cross(fmpz * c, const fmpz * x, const fmpz * y)
-{
-    fmpz_mul(c + 0, x + 1, y + 2);
-    fmpz_submul(c + 0, x + 2, y + 1);
-    fmpz_mul(c + 1, x + 2, y + 0);
-    fmpz_submul(c + 1, x + 0, y + 2);
-    fmpz_mul(c + 2, x + 0, y + 1);
-    fmpz_submul(c + 2, x + 1, y + 0);
-}
-
-/* v := the primitive vector on its ray; with canon, the first nonzero
-   entry is made positive too (the same vector for v and -v), and the
-   return value says whether v was negated.  */
-static int
-primitive(fmpz * v, fmpz_t t, int canon)
-{
-    slong j;
-
-    _fmpz_vec_content(t, v, 3);
-    if (!fmpz_is_zero(t))
-        _fmpz_vec_scalar_divexact_fmpz(v, v, 3, t);
-    if (!canon)
-        return 0;
-    for (j = 0; j < 2 && fmpz_is_zero(v + j); j++)
-        ;
-    if (fmpz_sgn(v + j) >= 0)
-        return 0;
-    _fmpz_vec_neg(v, v, 3);
-    return 1;
-}
-
-/* A set of 3-vectors (lines or planes, canonical up to sign) with ids:
-   open addressing on a hash of the entries.  */
-typedef struct
-{
-    slong size;         /* a power of two, at least twice count */
-    slong count;
-    slong * slot;
-    fmpz_mat_t v;       /* count rows in use */
-}
-vec_set;
-
-static void
-vec_set_init(vec_set * S, slong expect)
-{
-    slong i;
-
-    for (S->size = 16; S->size < 2 * expect + 2; S->size *= 2)
-        ;
-    S->count = 0;
-    S->slot = flint_malloc(sizeof(slong) * S->size);
-    for (i = 0; i < S->size; i++)
-        S->slot[i] = -1;
-    fmpz_mat_init(S->v, expect + 1, 3);
-}
-
-static void
-vec_set_clear(vec_set * S)
-{
-    flint_free(S->slot);
-    fmpz_mat_clear(S->v);
-}
-
-/* The id of v, added when new (room for expect entries was made).  */
-static slong
-vec_set_id(vec_set * S, const fmpz * v)
-{
-    ulong h = 0;
-    slong i, j;
-
-    for (j = 0; j < 3; j++)
-        h = h * UWORD(1000003) + fmpz_fdiv_ui(v + j, UWORD(4294967291));
-    for (i = (slong) (h & (S->size - 1)); S->slot[i] >= 0;
-         i = (i + 1) & (S->size - 1))
-        if (_fmpz_vec_equal(ROW(S->v, S->slot[i]), v, 3))
-            return S->slot[i];
-    _fmpz_vec_set(ROW(S->v, S->count), v, 3);
-    S->slot[i] = S->count;
-    return S->count++;
-}
-
-/* A ray on a plane with its position around the plane's normal: half 0
-   or 1 and coordinates (x, y) in an oriented basis of the plane.  */
-typedef struct
-{
-    int half;
-    fmpz_t x;
-    fmpz_t y;
-    slong ray;          /* 2 line + (0 for +line, 1 for -line) */
-}
-angle_ref;
-
-static int
-angle_cmp(const void * p, const void * q)
-{
-    const angle_ref * a = p, * b = q;
-    fmpz_t c;
-    int s;
-
-    if (a->half != b->half)
-        return a->half - b->half;
-    fmpz_init(c);
-    fmpz_mul(c, a->x, b->y);
-    fmpz_submul(c, a->y, b->x);
-    s = -fmpz_sgn(c);           /* a first when b is counter-clockwise */
-    fmpz_clear(c);
-    return s;
-}
-
-/* Growable lists of slong, one per index (CSR built at the end would do
-   too; these stay short).  */
-typedef struct
-{
-    slong len;
-    slong alloc;
-    slong * x;
-}
-id_list;
-
-static void
-id_push(id_list * L, slong v)
-{
-    if (L->len == L->alloc)
-    {
-        L->alloc = L->alloc ? 2 * L->alloc : 4;
-        L->x = flint_realloc(L->x, sizeof(slong) * L->alloc);
-    }
-    L->x[L->len++] = v;
-}
-
-static int
-slong_cmp(const void * p, const void * q)
-{
-    slong a = *(const slong *) p, b = *(const slong *) q;
-
-    return (a > b) - (a < b);
-}
-
-static void
-id_sort_unique(id_list * L)
-{
-    slong i, j;
-
-    qsort(L->x, L->len, sizeof(slong), slong_cmp);
-    for (i = 0, j = 0; i < L->len; i++)
-        if (j == 0 || L->x[j - 1] != L->x[i])
-            L->x[j++] = L->x[i];
-    L->len = j;
-}
+/* ---------------------------------------------------------------------
+   The walk over the faces.  */
 
 /* The walk's state: the signs of the 2n forms at the current face, the
    mode letters they give, and how many touching fixels they penetrate;
-   all kept up to date one sign at a time.  */
+   all kept up to date one sign at a time.  The forms are the columns of
+   J, each a sign times the canonical normal of its plane.  */
 typedef struct
 {
     const wc_problem_struct * P;
     slong n;
-    const fmpz_mat_struct * a;      /* 2n columns, primitive */
+    fmpz_mat_t a;                   /* 2n columns, primitive */
+    int * sgnf;                     /* 2n: column k is sgnf[k] h_plane */
+    slong * coff;                   /* the columns of plane q are */
+    slong * col;                    /* col[coff[q] .. coff[q + 1]) */
+    fmpz_mat_t planes;              /* the distinct planes, canonical */
     int * sg;
     char * cur;                     /* n letters and a NUL */
     slong pen;                      /* touching fixels with v_in < 0 */
-    mode_set * S;
+    mode_set S;
+    fmpz * wit;
     fmpz_t t;
 }
 walk;
+
+/* The forms of W->a grouped by plane.  */
+static void
+walk_planes(walk * W)
+{
+    slong K = 2 * W->n, np, k;
+    slong * plane_of = flint_malloc(sizeof(slong) * (K + 1));
+    fmpz * v = _fmpz_vec_init(3);
+    _wc_zvec3_set_t H;
+
+    _wc_zvec3_set_init(H, K);
+    for (k = 0; k < K; k++)
+    {
+        _fmpz_vec_set(v, WC_ROW(W->a, k), 3);
+        W->sgnf[k] = _wc_zvec3_canonical(v, W->t) < 0 ? -1 : 1;
+        plane_of[k] = _wc_zvec3_set_id(H, v);
+    }
+    np = H->count;
+    fmpz_mat_clear(W->planes);
+    fmpz_mat_init(W->planes, np, 3);
+    for (k = 0; k < np; k++)
+        _fmpz_vec_set(WC_ROW(W->planes, k), _wc_zvec3_set_entry(H, k), 3);
+    W->coff = flint_calloc(np + 2, sizeof(slong));
+    for (k = 0; k < K; k++)
+        W->coff[plane_of[k] + 2]++;
+    for (k = 0; k < np; k++)
+        W->coff[k + 2] += W->coff[k + 1];
+    for (k = 0; k < K; k++)
+        W->col[W->coff[plane_of[k] + 1]++] = k;
+    flint_free(plane_of);
+    _fmpz_vec_clear(v, 3);
+    _wc_zvec3_set_clear(H);
+}
+
+static void
+walk_init(walk * W, const wc_problem_t P)
+{
+    slong n = P->n, K = 2 * n;
+
+    W->P = P;
+    W->n = n;
+    fmpz_mat_init(W->a, K, 3);
+    columns(W->a, P);
+    W->sgnf = flint_malloc(sizeof(int) * (K + 1));
+    W->col = flint_malloc(sizeof(slong) * (K + 1));
+    fmpz_mat_init(W->planes, 0, 3);
+    W->sg = flint_calloc(K + 1, sizeof(int));
+    W->cur = flint_malloc(n + 1);
+    memset(W->cur, ' ', n);
+    W->cur[n] = '\0';
+    W->pen = 0;
+    mode_set_init(&W->S, n);
+    W->wit = _fmpz_vec_init(3);
+    fmpz_init(W->t);
+    walk_planes(W);
+}
+
+static void
+walk_clear(walk * W)
+{
+    fmpz_mat_clear(W->a);
+    flint_free(W->sgnf);
+    flint_free(W->coff);
+    flint_free(W->col);
+    fmpz_mat_clear(W->planes);
+    flint_free(W->sg);
+    flint_free(W->cur);
+    mode_set_clear(&W->S);
+    _fmpz_vec_clear(W->wit, 3);
+    fmpz_clear(W->t);
+}
 
 static void
 set_letter(walk * W, slong i)
@@ -416,14 +341,7 @@ set_sign(walk * W, slong k, int s)
     set_letter(W, k % W->n);
 }
 
-/* 1 when the current face is not penetrating and its mode is new.  */
-static int
-is_new(walk * W)
-{
-    return W->pen == 0 && W->S->slot[mode_set_find(W->S, W->cur)] < 0;
-}
-
-/* Witness of a chamber beside the arc with midpoint m on the plane of
+/* Witness of a chamber beside the arc with point m on the plane of
    normal h: m + side t h with t below every |a_k . m| / |a_k . h|, so
    that no sign of m changes but those of the plane's own columns.  */
 static void
@@ -442,8 +360,8 @@ chamber_witness(fmpz * w, walk * W, const fmpz * m, const fmpz * h, int side)
     fmpz_one(den);
     for (k = 0; k < K; k++)
     {
-        _fmpz_vec_dot(am, ROW(W->a, k), m, 3);
-        _fmpz_vec_dot(ah, ROW(W->a, k), h, 3);
+        _fmpz_vec_dot(am, WC_ROW(W->a, k), m, 3);
+        _fmpz_vec_dot(ah, WC_ROW(W->a, k), h, 3);
         if (fmpz_is_zero(am) || fmpz_is_zero(ah))
             continue;
         fmpz_abs(am, am);
@@ -466,13 +384,42 @@ chamber_witness(fmpz * w, walk * W, const fmpz * m, const fmpz * h, int side)
         else
             fmpz_sub(w + k, w + k, c1);
     }
-    primitive(w, W->t, 0);
+    _wc_zvec3_primitive(w, W->t);
     fmpz_clear(num);
     fmpz_clear(den);
     fmpz_clear(am);
     fmpz_clear(ah);
     fmpz_clear(c1);
     fmpz_clear(c2);
+}
+
+/* A face of the arrangement: update the forms of the planes whose sign
+   changed; a face that penetrates no touching fixel and has a new mode
+   adds it.  Only the non-penetrating faces pay for the lookup.  */
+static int
+visit_face(void * data, const _wc_face_struct * F, wc_error_t err)
+{
+    walk * W = data;
+    slong i, j;
+
+    (void) err;
+    for (i = 0; i < F->nchanged; i++)
+    {
+        slong q = F->changed[i];
+
+        for (j = W->coff[q]; j < W->coff[q + 1]; j++)
+            set_sign(W, W->col[j], W->sgnf[W->col[j]] * F->sign[q]);
+    }
+    if (W->pen != 0 || W->S.slot[mode_set_find(&W->S, W->cur)] >= 0)
+        return WC_OK;
+    if (F->dim == 3)
+    {
+        chamber_witness(W->wit, W, F->point, F->normal, F->side);
+        mode_set_add(&W->S, W->cur, W->wit);
+    }
+    else
+        mode_set_add(&W->S, W->cur, F->point);
+    return WC_OK;
 }
 
 void
@@ -509,265 +456,53 @@ mode_ref_cmp(const void * p, const void * q)
     return strcmp(((const mode_ref *) p)->s, ((const mode_ref *) q)->s);
 }
 
+/* M := the modes of S, sorted.  */
 static void
-enumerate(wc_modes_t M, const wc_problem_t P)
+modes_sorted(wc_modes_t M, const mode_set * S)
 {
-    slong n = P->n, K = 2 * n, np, nl, i, j, k, p, q, c, z;
-    int side;
-    fmpz_mat_t a;
-    fmpz * v = _fmpz_vec_init(3), * u = _fmpz_vec_init(3),
-        * w = _fmpz_vec_init(3), * mid = _fmpz_vec_init(3),
-        * next = _fmpz_vec_init(3), * wit = _fmpz_vec_init(3);
-    int * sgnf = flint_malloc(sizeof(int) * (K + 1)), * done;
-    slong * plane_of = flint_malloc(sizeof(slong) * (K + 1));
-    id_list * cols, * lines_on, * planes_on;
-    angle_ref * ang;
-    vec_set planes, lines;
-    mode_set S;
-    mode_ref * ref;
-    walk W;
+    slong n = S->n, i;
+    mode_ref * ref = flint_malloc(sizeof(mode_ref) * (S->count + 1));
 
-    mode_set_init(&S, n);
-    fmpz_mat_init(a, K, 3);
-    columns(a, P);
-    W.P = P;
-    W.n = n;
-    W.a = a;
-    W.S = &S;
-    W.sg = flint_calloc(K + 1, sizeof(int));
-    W.cur = flint_malloc(n + 1);
-    W.cur[n] = '\0';
-    W.pen = 0;
-    fmpz_init(W.t);
-
-    /* The origin: every form is zero.  */
-    for (i = 0; i < n; i++)
-        W.cur[i] = ' ';
-    for (k = 0; k < K; k++)
-        set_sign(&W, k, 0);
-    if (is_new(&W))
-        mode_set_add(&S, W.cur, v);
-
-    /* Distinct planes (a column up to sign) and their columns.  */
-    vec_set_init(&planes, K);
-    for (k = 0; k < K; k++)
+    for (i = 0; i < S->count; i++)
     {
-        _fmpz_vec_set(v, ROW(a, k), 3);
-        sgnf[k] = primitive(v, W.t, 1) ? -1 : 1;
-        plane_of[k] = vec_set_id(&planes, v);
-    }
-    np = planes.count;
-    cols = flint_calloc(np + 1, sizeof(id_list));
-    for (k = 0; k < K; k++)
-        id_push(cols + plane_of[k], k);
-
-    /* Lines where planes meet (up to sign), with the planes on each line
-       and the lines on each plane: O(P^2), however degenerate.  */
-    vec_set_init(&lines, np * (np - 1) / 2 + 1);
-    lines_on = flint_calloc(np + 1, sizeof(id_list));
-    planes_on = flint_calloc(np * (np - 1) / 2 + 1, sizeof(id_list));
-    for (p = 0; p < np; p++)
-        for (q = p + 1; q < np; q++)
-        {
-            slong l;
-
-            cross(v, ROW(planes.v, p), ROW(planes.v, q));
-            primitive(v, W.t, 1);
-            l = vec_set_id(&lines, v);
-            id_push(lines_on + p, l);
-            id_push(lines_on + q, l);
-            id_push(planes_on + l, p);
-            id_push(planes_on + l, q);
-        }
-    nl = lines.count;
-    for (p = 0; p < np; p++)
-        id_sort_unique(lines_on + p);
-    for (i = 0; i < nl; i++)
-        id_sort_unique(planes_on + i);
-    done = flint_calloc(2 * nl + 1, sizeof(int));
-
-    /* Walk around each plane: its rays in angular order, the arcs between
-       them and the chambers on both sides of each arc.  Only the forms of
-       the planes through a crossed ray change sign.  Every plane holds at
-       least one line (the two columns of a fixel are never parallel).  */
-    ang = flint_malloc(sizeof(angle_ref) * (2 * nl + 2));
-    for (i = 0; i < 2 * nl + 2; i++)
-    {
-        fmpz_init(ang[i].x);
-        fmpz_init(ang[i].y);
-    }
-    for (p = 0; p < np; p++)
-    {
-        const fmpz * h = ROW(planes.v, p);
-
-        c = 0;
-        for (i = 0; i < lines_on[p].len; i++)
-        {
-            ang[c++].ray = 2 * lines_on[p].x[i];
-            ang[c++].ray = 2 * lines_on[p].x[i] + 1;
-        }
-        /* Basis (u, w = h x u) of the plane: counter-clockwise seen from
-           h.  */
-        _fmpz_vec_set(u, ROW(lines.v, lines_on[p].x[0]), 3);
-        cross(w, h, u);
-        for (i = 0; i < c; i++)
-        {
-            const fmpz * r = ROW(lines.v, ang[i].ray / 2);
-            int s = (ang[i].ray & 1) ? -1 : 1;
-
-            _fmpz_vec_dot(ang[i].x, r, u, 3);
-            _fmpz_vec_dot(ang[i].y, r, w, 3);
-            fmpz_mul_si(ang[i].x, ang[i].x, s);
-            fmpz_mul_si(ang[i].y, ang[i].y, s);
-            ang[i].half = !(fmpz_sgn(ang[i].y) > 0
-                            || (fmpz_is_zero(ang[i].y) && fmpz_sgn(ang[i].x) > 0));
-        }
-        qsort(ang, c, sizeof(angle_ref), angle_cmp);
-
-        for (i = 0; i < c; i++)
-        {
-            /* mid: a point of arc i, from ray i to ray i + 1.  */
-            if (c == 2)
-                _fmpz_vec_scalar_mul_si(mid, w, 3, i == 0 ? 1 : -1);
-            else
-            {
-                _fmpz_vec_scalar_mul_si(mid, ROW(lines.v, ang[i].ray / 2), 3,
-                                        (ang[i].ray & 1) ? -1 : 1);
-                z = ang[(i + 1) % c].ray;
-                _fmpz_vec_scalar_addmul_si(mid, ROW(lines.v, z / 2), 3,
-                                           (z & 1) ? -1 : 1);
-            }
-            primitive(mid, W.t, 0);
-            if (i == 0)
-                for (k = 0; k < K; k++)
-                {
-                    _fmpz_vec_dot(W.t, ROW(a, k), mid, 3);
-                    set_sign(&W, k, fmpz_sgn(W.t));
-                }
-            if (is_new(&W))
-                mode_set_add(&S, W.cur, mid);
-            /* The chambers: the plane's own forms leave zero.  */
-            for (side = -1; side <= 1; side += 2)
-            {
-                for (j = 0; j < cols[p].len; j++)
-                    set_sign(&W, cols[p].x[j], side * sgnf[cols[p].x[j]]);
-                if (is_new(&W))
-                {
-                    chamber_witness(wit, &W, mid, h, side);
-                    mode_set_add(&S, W.cur, wit);
-                }
-            }
-            for (j = 0; j < cols[p].len; j++)
-                set_sign(&W, cols[p].x[j], 0);
-            if (i + 1 == c)
-                break;
-            /* Cross ray i + 1: the forms of the planes through it are zero
-               there, then take their signs on the next arc.  */
-            z = ang[i + 1].ray;
-            _fmpz_vec_scalar_mul_si(v, ROW(lines.v, z / 2), 3, (z & 1) ? -1 : 1);
-            for (j = 0; j < planes_on[z / 2].len; j++)
-            {
-                if ((q = planes_on[z / 2].x[j]) == p)
-                    continue;
-                for (k = 0; k < cols[q].len; k++)
-                    set_sign(&W, cols[q].x[k], 0);
-            }
-            if (!done[z])
-            {
-                done[z] = 1;
-                if (is_new(&W))
-                    mode_set_add(&S, W.cur, v);
-            }
-            if (c == 2)
-                _fmpz_vec_scalar_mul_si(next, w, 3, -1);
-            else
-            {
-                _fmpz_vec_set(next, v, 3);
-                q = ang[(i + 2) % c].ray;
-                _fmpz_vec_scalar_addmul_si(next, ROW(lines.v, q / 2), 3,
-                                           (q & 1) ? -1 : 1);
-            }
-            for (j = 0; j < planes_on[z / 2].len; j++)
-            {
-                if ((q = planes_on[z / 2].x[j]) == p)
-                    continue;
-                for (k = 0; k < cols[q].len; k++)
-                {
-                    _fmpz_vec_dot(W.t, ROW(a, cols[q].x[k]), next, 3);
-                    set_sign(&W, cols[q].x[k], fmpz_sgn(W.t));
-                }
-            }
-        }
-        /* Ray 0 of this plane, met only as a start: record it too.  */
-        z = ang[0].ray;
-        if (!done[z])
-        {
-            done[z] = 1;
-            _fmpz_vec_scalar_mul_si(v, ROW(lines.v, z / 2), 3, (z & 1) ? -1 : 1);
-            for (k = 0; k < K; k++)
-            {
-                _fmpz_vec_dot(W.t, ROW(a, k), v, 3);
-                set_sign(&W, k, fmpz_sgn(W.t));
-            }
-            if (is_new(&W))
-                mode_set_add(&S, W.cur, v);
-        }
-    }
-
-    /* Sorted output.  */
-    ref = flint_malloc(sizeof(mode_ref) * (S.count + 1));
-    for (i = 0; i < S.count; i++)
-    {
-        ref[i].s = S.letters + i * (n + 1);
+        ref[i].s = S->letters + i * (n + 1);
         ref[i].i = i;
     }
-    qsort(ref, S.count, sizeof(mode_ref), mode_ref_cmp);
+    qsort(ref, S->count, sizeof(mode_ref), mode_ref_cmp);
     wc_modes_clear(M);
     M->n = n;
-    M->count = S.count;
-    M->modes = malloc(sizeof(char *) * (S.count + 1));
+    M->count = S->count;
+    M->modes = malloc(sizeof(char *) * (S->count + 1));
     fmpz_mat_clear(M->witness);
-    fmpz_mat_init(M->witness, S.count, 3);
-    for (i = 0; i < S.count; i++)
+    fmpz_mat_init(M->witness, S->count, 3);
+    for (i = 0; i < S->count; i++)
     {
         M->modes[i] = malloc(n + 1);
         memcpy(M->modes[i], ref[i].s, n + 1);
-        _fmpz_vec_set(ROW(M->witness, i), ROW(S.wit, ref[i].i), 3);
+        _fmpz_vec_set(WC_ROW(M->witness, i), WC_ROW(S->wit, ref[i].i), 3);
     }
-
     flint_free(ref);
-    for (i = 0; i < 2 * nl + 2; i++)
-    {
-        fmpz_clear(ang[i].x);
-        fmpz_clear(ang[i].y);
-    }
-    flint_free(ang);
-    for (p = 0; p < np; p++)
-    {
-        flint_free(cols[p].x);
-        flint_free(lines_on[p].x);
-    }
-    for (i = 0; i < np * (np - 1) / 2 + 1; i++)
-        flint_free(planes_on[i].x);
-    flint_free(cols);
-    flint_free(lines_on);
-    flint_free(planes_on);
-    flint_free(done);
-    flint_free(sgnf);
-    flint_free(plane_of);
-    flint_free(W.sg);
-    flint_free(W.cur);
-    fmpz_clear(W.t);
-    _fmpz_vec_clear(v, 3);
-    _fmpz_vec_clear(u, 3);
-    _fmpz_vec_clear(w, 3);
-    _fmpz_vec_clear(mid, 3);
-    _fmpz_vec_clear(next, 3);
-    _fmpz_vec_clear(wit, 3);
-    fmpz_mat_clear(a);
-    vec_set_clear(&planes);
-    vec_set_clear(&lines);
-    mode_set_clear(&S);
+}
+
+/* The walk of arrangement.c over the planes of the columns of J: every
+   plane holds at least one line (the two columns of a fixel are never
+   parallel).  */
+static int
+enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err)
+{
+    _wc_arrangement_t R;
+    walk W;
+    int status;
+
+    walk_init(&W, P);
+    status = _wc_arrangement_init(R, W.planes, err);
+    if (status == WC_OK)
+        status = _wc_arrangement_walk(R, visit_face, &W, err);
+    if (status == WC_OK)
+        modes_sorted(M, &W.S);
+    _wc_arrangement_clear(R);
+    walk_clear(&W);
+    return status;
 }
 
 int
@@ -776,7 +511,7 @@ wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err)
     int status = wc_problem_check(P, err);
 
     if (status == WC_OK)
-        enumerate(M, P);
+        status = enumerate(M, P, err);
     return status;
 }
 

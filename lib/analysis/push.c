@@ -41,10 +41,10 @@
 
 #include <flint/fmpz_vec.h>
 
-#include "wrenchcone.h"
+#include "core/error.h"
+#include "core/problem.h"
+#include "exact/vec3.h"
 #include "analysis/push.h"
-
-#define ROW(A, i) ((A)->rows[i])
 
 /* ---------------------------------------------------------------------
    The result type.  */
@@ -254,7 +254,7 @@ polygon_edge(ivlist * L, slong edge, const fmpq * v0, const fmpq * v1,
     fmpq_one(bp + nb++);
     for (i = 0; i < fmpz_mat_nrows(planes); i++)
     {
-        const fmpz * h = ROW(planes, i);
+        const fmpz * h = WC_ROW(planes, i);
 
         if (_fmpz_vec_is_zero(h, 3))
             continue;
@@ -529,7 +529,7 @@ disk_regions(ivlist * L, const wc_problem_t P, const fmpz_mat_t planes,
     nb = 0;
     for (i = 0; i < nrows; i++)
     {
-        const fmpz * h = ROW(planes, i);
+        const fmpz * h = WC_ROW(planes, i);
 
         fmpq_mul_fmpz(t, r + 1, h + 2);
         fmpq_sub_fmpz(a + 0, t, h + 0);         /* h_t r_y - h_x */

@@ -1,80 +1,30 @@
-/* cells.c -- the cells of a central arrangement of planes in R^3, and
-   sets of wrenches as pairwise disjoint sign boxes.
+/* cells.c -- the cells of a central arrangement of planes in R^3.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   The cells.  With the coordinate planes among them, the planes meet
-   pairwise in lines, every plane holds at least two distinct lines (if all
-   the others met plane p in one line L, every normal would be orthogonal
-   to L, and e1, e2, e3 are not), and every cell but the origin is a
-   pointed cone.  The cells are
+   With the coordinate planes among them, the planes meet pairwise in
+   lines, every plane holds at least two distinct lines (if all the others
+   met plane p in one line L, every normal would be orthogonal to L, and
+   e1, e2, e3 are not), and every cell but the origin is a pointed cone.
+   The walk of arrangement.c reports every cell with its sign vector: the
+   origin, the rays (both directions of every line), the sectors (the
+   arcs between consecutive rays on a plane, each of angle below pi, as
+   there are at least four rays) and the chambers beside them.
 
-   - the origin;
-   - the rays: both directions of every line where two planes meet;
-   - the sectors: on plane p the k lines through it give 2k rays, which
-     cut p into 2k arcs, each of angle below pi (there are at least four
-     rays); the sum of the two rays bounding an arc lies in it;
-   - the chambers: every chamber has a facet, and the relative interior of
-     a facet is one sector (a plane that cut it would cut the chamber), so
-     every chamber lies beside some arc.
-
-   Sign vectors are computed once per line, by dot products; the others
-   follow by combinatorics.  On the open arc from ray a to the next ray b
-   on p, a plane q != p that does not hold a has the sign it has at a (q
-   meets p in one of p's lines, whose rays are not inside the arc); a plane q != p through a has the sign it has at b (b is not on q,
-   since q and p share only the line of a).  A chamber beside the arc has
-   the arc's signs but for p.  Its point is k mid + side h_p with
-   k |h_q . mid| > |h_q . h_p| for every q != p, so that no other sign
-   changes; this costs O(m) dot products, paid once per chamber (its sign
-   vector is looked up first), and checks the arc's derived signs on the
-   way.
+   A chamber beside the arc with point mid on plane p has the arc's signs
+   but for p.  Its point is k mid + side h_p with k |h_q . mid| >
+   |h_q . h_p| for every q != p, so that no other sign changes; this costs
+   O(m) dot products, paid once per chamber (its sign vector is looked up
+   first), and checks the arc's signs on the way.
 
    With m planes there are at most m (m - 1) rays, as many sectors as
    rays counted on their planes (at most 2 m (m - 1)) and, by Euler's
    relation on the sphere (rays - sectors + chambers = 2), fewer chambers
    than sectors: O(m^2) cells with sign vectors of m entries, found in
    O(m^3) time (and sorted in O(m^3 log m) at worst).  Duplicates are
-   found by a hash table on the sign vectors, compared in full.
-
-   Sets.  A set is a union of cells, given by member flags, and its
-   pieces are sign boxes.  Both steps below keep every box exactly the
-   union of the member cells whose sign vectors it holds, so that the
-   boxes are pairwise disjoint and cover the set.
-
-   Top-down: the tightest box holding the members (per plane, the signs
-   they take) is a piece when it holds no non-member cell; else the
-   members are split along one plane, between two convex parts of their
-   signs there, and each part is treated alike.  A set that is itself a
-   box (the whole space, any convex cone cut out by planes of the
-   arrangement) thus comes out as one piece, and the split planes are
-   chosen among the walls of the set, so that a set bounded by a few
-   planes usually comes out as a few pieces.  This costs O(m) per cell
-   and level.
-
-   Bottom-up: boxes that agree on all planes but one, where their sign
-   sets are disjoint with a convex union, merge (their union is the box
-   with the union of their sets), plane after plane until a round over
-   all planes merges nothing.  Started from the cells alone, this rule
-   gets stuck: after a merge along p a box remembers whether p cut it,
-   and boxes that differ in two planes never merge (on random
-   arrangements, all the cells came out as one piece about once in nine,
-   and a convex cone's cells in up to 79 pieces).  After the top-down
-   step it still joins some pieces.  A box hashes as a sum of one random
-   word per (plane, set), so the hash with a plane left out costs O(1)
-   and a round costs O(m) per box.
-
-   Each box becomes an NNC cone.  Its closure is the closed box (the box is
-   nonempty), and when the planes constraining it span R^3, the closure is
-   pointed and generated by its extreme rays: the rays of the arrangement
-   in the closed box that lie on two constraining planes (two distinct
-   planes through a point make its tight constraints rank 2), looked for
-   among all the rays when there are few boxes, else among the rays
-   bounding the box's member cells (found through the incidences of
-   cells).  That gives the closure with only its facets; the strict rows
-   are then needed only on the maximal faces they vanish on.  This keeps
-   the exact conversion small when many planes constrain a box.  */
+   found by a hash table on the sign vectors, compared in full.  */
 
 #include <config.h>
 
@@ -83,149 +33,16 @@
 #include <string.h>
 
 #include <flint/fmpz_vec.h>
-#include <flint/fmpq_mat.h>
 
+#include "exact/vec3.h"
+#include "exact/hash.h"
+#include "exact/zvec3set.h"
+#include "exact/arrangement.h"
 #include "exact/cells.h"
 
-/* Row i of an fmpz_mat (FLINT 2.9 has no fmpz_mat_row).  */
-#define ROW(A, i) ((A)->rows[i])
-
-/* Sign sets on one plane, as bit masks: bit 0 for -, 1 for 0, 2 for +.
-   5 = {-, +} is the only nonempty set that is not convex.  */
-#define SET_ALL 7
-#define SET_BAD 5
-
-/* ---------------------------------------------------------------------
-   Small helpers on integer 3-vectors.  */
-
-static void
-cross(fmpz * c, const fmpz * x, const fmpz * y)
-{
-    fmpz_mul(c + 0, x + 1, y + 2);
-    fmpz_submul(c + 0, x + 2, y + 1);
-    fmpz_mul(c + 1, x + 2, y + 0);
-    fmpz_submul(c + 1, x + 0, y + 2);
-    fmpz_mul(c + 2, x + 0, y + 1);
-    fmpz_submul(c + 2, x + 1, y + 0);
-}
-
-/* Sign of x . y, t a scratch integer.  */
-static int
-dot_sgn(const fmpz * x, const fmpz * y, fmpz_t t)
-{
-    fmpz_mul(t, x + 0, y + 0);
-    fmpz_addmul(t, x + 1, y + 1);
-    fmpz_addmul(t, x + 2, y + 2);
-    return fmpz_sgn(t);
-}
-
-/* v := the primitive vector on its ray (v nonzero).  */
-static void
-make_primitive(fmpz * v, fmpz_t t)
-{
-    _fmpz_vec_content(t, v, 3);
-    if (!fmpz_is_zero(t) && !fmpz_is_one(t))
-        _fmpz_vec_scalar_divexact_fmpz(v, v, 3, t);
-}
-
-/* v := the primitive vector on its line whose first nonzero entry is
-   positive.  Returns 0 when v is zero.  */
-static int
-make_canonical(fmpz * v, fmpz_t t)
-{
-    slong j;
-
-    for (j = 0; j < 3 && fmpz_is_zero(v + j); j++)
-        ;
-    if (j == 3)
-        return 0;
-    make_primitive(v, t);
-    if (fmpz_sgn(v + j) < 0)
-        _fmpz_vec_neg(v, v, 3);
-    return 1;
-}
-
-static int
-vec_cmp(const fmpz * a, const fmpz * b)
-{
-    slong j;
-    int c;
-
-    for (j = 0; j < 3; j++)
-        if ((c = fmpz_cmp(a + j, b + j)) != 0)
-            return c;
-    return 0;
-}
-
-static int
-vec_ptr_cmp(const void * p, const void * q)
-{
-    return vec_cmp(*(const fmpz * const *) p, *(const fmpz * const *) q);
-}
-
-static int
-slong_cmp(const void * p, const void * q)
-{
-    slong a = *(const slong *) p, b = *(const slong *) q;
-
-    return (a > b) - (a < b);
-}
-
-/* ---------------------------------------------------------------------
-   Hashing.  */
-
-static uint64_t
-mix64(uint64_t z)
-{
-    z = (z ^ (z >> 30)) * UINT64_C(0xbf58476d1ce4e5b9);
-    z = (z ^ (z >> 27)) * UINT64_C(0x94d049bb133111eb);
-    return z ^ (z >> 31);
-}
-
-static uint64_t
-bytes_hash(const unsigned char * k, slong len)
-{
-    uint64_t h = UINT64_C(0x9e3779b97f4a7c15) ^ (uint64_t) len, w;
-    slong i;
-
-    for (i = 0; i + 8 <= len; i += 8)
-    {
-        memcpy(&w, k + i, 8);
-        h = mix64(h ^ w) + UINT64_C(0x9e3779b97f4a7c15);
-    }
-    if (i < len)
-    {
-        w = 0;
-        memcpy(&w, k + i, len - i);
-        h = mix64(h ^ w) + UINT64_C(0x9e3779b97f4a7c15);
-    }
-    return mix64(h);
-}
-
-static uint64_t
-vec_hash(const fmpz * v)
-{
-    uint64_t h = 0;
-    slong j;
-
-    for (j = 0; j < 3; j++)
-        h = mix64(h ^ (uint64_t) fmpz_fdiv_ui(v + j, UWORD(4294967291)));
-    return h;
-}
-
-static slong
-pow2_at_least(slong n)
-{
-    slong s = 16;
-
-    while (s < n)
-        s *= 2;
-    return s;
-}
-
 /* Planes with entries below 2^16 give lines below 2^33 and sector points
-   below 2^34, and all the dot products the walk needs fit a 64-bit word
-   (below 3 2^50): then it does them in words.  */
+   below 2^34, and the dot products a chamber's point needs fit a 64-bit
+   word (below 3 2^50): then they are done in words.  */
 #define SMALL_BITS 16
 
 /* ---------------------------------------------------------------------
@@ -235,9 +52,6 @@ pow2_at_least(slong n)
 typedef struct
 {
     slong m;                /* planes */
-    const fmpz_mat_struct * H;
-    slong * h64;            /* H as words when its entries are below
-                               2^SMALL_BITS, else NULL */
     slong cap;              /* cells expected (keys have room for one
                                more, the candidate) */
     slong count;
@@ -251,35 +65,18 @@ typedef struct
 cell_list;
 
 static void
-cell_list_init(cell_list * L, const fmpz_mat_t H, slong cap)
+cell_list_init(cell_list * L, slong m, slong cap)
 {
     slong i;
 
-    L->m = fmpz_mat_nrows(H);
-    L->H = H;
-    L->h64 = NULL;
-#if FLINT_BITS == 64
-    L->h64 = flint_malloc(sizeof(slong) * 3 * L->m);
-    for (i = 0; i < 3 * L->m && L->h64 != NULL; i++)
-    {
-        const fmpz * x = fmpz_mat_entry(H, i / 3, i % 3);
-
-        if (fmpz_bits(x) > SMALL_BITS)
-        {
-            flint_free(L->h64);
-            L->h64 = NULL;
-        }
-        else
-            L->h64[i] = fmpz_get_si(x);
-    }
-#endif
+    L->m = m;
     L->cap = cap;
     L->count = 0;
-    L->key = flint_malloc((cap + 1) * L->m);
+    L->key = flint_malloc((cap + 1) * m + 1);
     L->hash = flint_malloc(sizeof(uint64_t) * (cap + 1));
     L->pt = _fmpz_vec_init(3 * (cap + 1));
     L->dim = flint_malloc(sizeof(slong) * (cap + 1));
-    L->size = pow2_at_least(2 * cap + 2);
+    L->size = _wc_hash_size(2 * cap + 2);
     L->slot = flint_malloc(sizeof(slong) * L->size);
     for (i = 0; i < L->size; i++)
         L->slot[i] = -1;
@@ -293,26 +90,18 @@ cell_list_clear(cell_list * L)
     _fmpz_vec_clear(L->pt, 3 * (L->cap + 1));
     flint_free(L->dim);
     flint_free(L->slot);
-    flint_free(L->h64);
 }
 
-/* The key of the next cell, to be filled in before cell_list_add.  */
-static unsigned char *
-cell_list_next(cell_list * L)
-{
-    return L->key + L->count * L->m;
-}
-
-/* Look the next key up: return -1 when it is new (it is then added, with
-   dimension d; its point is to be written to L->pt + 3 * index, the
-   index being returned through *at), else the index of the equal cell.
-   Never called with count > cap.  */
+/* Look the next key (L->key + count m) up: return -1 when it is new (it
+   is then added, with dimension d; its point is to be written to L->pt +
+   3 * index, the index being returned through *at), else the index of
+   the equal cell.  Never called with count > cap.  */
 static slong
 cell_list_add(cell_list * L, slong d, slong * at)
 {
     slong m = L->m, c = L->count, i;
     const unsigned char * k = L->key + c * m;
-    uint64_t h = bytes_hash(k, m);
+    uint64_t h = _wc_hash_bytes(k, m);
 
     for (i = (slong) (h & (L->size - 1)); L->slot[i] >= 0;
          i = (i + 1) & (L->size - 1))
@@ -331,97 +120,200 @@ cell_list_add(cell_list * L, slong d, slong * at)
 }
 
 /* ---------------------------------------------------------------------
-   A set of canonical lines (3-vectors) with ids.  */
+   Collecting the cells of the walk.  */
 
 typedef struct
 {
-    slong size;
-    slong count;
-    slong * slot;
-    fmpz_mat_t v;
+    cell_list * L;
+    const fmpz_mat_struct * H;
+    slong * h64;            /* H as words when its entries are below
+                               2^SMALL_BITS, else NULL */
+    slong hplane;           /* the plane hh is for */
+    fmpz * hh;              /* h_q . h_p, m entries */
+    slong * hh64;           /* the same in words, with h64 */
+    slong sec;              /* the current sector's cell */
+    int have_k;             /* k is set for it */
+    fmpz_t k;
+    fmpz_t t;
+    fmpz_t a;
 }
-line_set;
+collect;
 
 static void
-line_set_init(line_set * S, slong expect)
+collect_init(collect * C, cell_list * L, const fmpz_mat_t H)
 {
-    slong i;
+    slong m = fmpz_mat_nrows(H), i;
 
-    S->size = pow2_at_least(2 * expect + 2);
-    S->count = 0;
-    S->slot = flint_malloc(sizeof(slong) * S->size);
-    for (i = 0; i < S->size; i++)
-        S->slot[i] = -1;
-    fmpz_mat_init(S->v, expect + 1, 3);
+    C->L = L;
+    C->H = H;
+    C->h64 = NULL;
+#if FLINT_BITS == 64
+    C->h64 = flint_malloc(sizeof(slong) * (3 * m + 1));
+    for (i = 0; i < 3 * m && C->h64 != NULL; i++)
+    {
+        const fmpz * x = fmpz_mat_entry(H, i / 3, i % 3);
+
+        if (fmpz_bits(x) > SMALL_BITS)
+        {
+            flint_free(C->h64);
+            C->h64 = NULL;
+        }
+        else
+            C->h64[i] = fmpz_get_si(x);
+    }
+#else
+    (void) i;
+#endif
+    C->hplane = -1;
+    C->hh = _fmpz_vec_init(m + 1);
+    C->hh64 = flint_malloc(sizeof(slong) * (m + 1));
+    C->sec = -1;
+    C->have_k = 0;
+    fmpz_init(C->k);
+    fmpz_init(C->t);
+    fmpz_init(C->a);
 }
 
 static void
-line_set_clear(line_set * S)
+collect_clear(collect * C)
 {
-    flint_free(S->slot);
-    fmpz_mat_clear(S->v);
+    flint_free(C->h64);
+    _fmpz_vec_clear(C->hh, C->L->m + 1);
+    flint_free(C->hh64);
+    fmpz_clear(C->k);
+    fmpz_clear(C->t);
+    fmpz_clear(C->a);
 }
 
-static slong
-line_set_id(line_set * S, const fmpz * v)
-{
-    slong i;
-
-    for (i = (slong) (vec_hash(v) & (S->size - 1)); S->slot[i] >= 0;
-         i = (i + 1) & (S->size - 1))
-        if (_fmpz_vec_equal(ROW(S->v, S->slot[i]), v, 3))
-            return S->slot[i];
-    _fmpz_vec_set(ROW(S->v, S->count), v, 3);
-    S->slot[i] = S->count;
-    return S->count++;
-}
-
-/* A line through a plane with its direction in the plane's coordinates
-   (x, y), turned into the half-plane y > 0 or y = 0 < x; o says whether
-   the line's canonical direction was turned.  */
-typedef struct
-{
-    fmpz_t x;
-    fmpz_t y;
-    slong line;
-    int o;
-}
-angle_ref;
-
-/* By angle in [0, pi): a before b when b is counter-clockwise of a.  */
+/* Check the signs seckey of the sector with point mid on plane p against
+   the dot products there, and set C->k to a multiplier for the points of
+   the chambers beside it: k |h_q . mid| > |h_q . h_p| for every q != p.
+   Returns 0 on a mismatch.  */
 static int
-angle_cmp(const void * p, const void * q)
+chamber_multiplier(collect * C, slong p, const fmpz * mid,
+                   const unsigned char * seckey)
 {
-    const angle_ref * a = p, * b = q;
-    fmpz_t c;
-    int s;
+    const slong * h64 = C->h64;
+    slong m = C->L->m, q;
 
-    fmpz_init(c);
-    fmpz_mul(c, a->x, b->y);
-    fmpz_submul(c, a->y, b->x);
-    s = -fmpz_sgn(c);
-    fmpz_clear(c);
-    return s;
+    if (C->hplane != p)
+    {
+        for (q = 0; q < m; q++)
+        {
+            _fmpz_vec_dot(C->hh + q, WC_ROW(C->H, q), WC_ROW(C->H, p), 3);
+            if (h64 != NULL)
+                C->hh64[q] = fmpz_get_si(C->hh + q);
+        }
+        C->hplane = p;
+    }
+    if (h64 != NULL)
+    {
+        slong x = fmpz_get_si(mid), y = fmpz_get_si(mid + 1),
+            z = fmpz_get_si(mid + 2), k = 0;
+
+        for (q = 0; q < m; q++)
+        {
+            slong d = h64[3 * q] * x + h64[3 * q + 1] * y + h64[3 * q + 2] * z;
+            slong e = C->hh64[q];
+
+            if ((d > 0) - (d < 0) + 1 != seckey[q])
+                return 0;
+            if (q == p || e == 0)
+                continue;
+            e = FLINT_ABS(e) / FLINT_ABS(d);
+            if (e > k)
+                k = e;
+        }
+        fmpz_set_si(C->k, k + 1);
+        return 1;
+    }
+    fmpz_zero(C->k);
+    for (q = 0; q < m; q++)
+    {
+        int s = _wc_zvec3_dot_sgn(WC_ROW(C->H, q), mid, C->a);
+
+        if (s + 1 != seckey[q])
+            return 0;
+        if (q == p || fmpz_is_zero(C->hh + q))
+            continue;
+        fmpz_abs(C->a, C->a);
+        fmpz_abs(C->t, C->hh + q);
+        fmpz_fdiv_q(C->t, C->t, C->a);
+        if (fmpz_cmp(C->t, C->k) > 0)
+            fmpz_set(C->k, C->t);
+    }
+    fmpz_add_ui(C->k, C->k, 1);
+    return 1;
 }
 
-typedef struct
-{
-    const unsigned char * key;
-    slong len;
-    slong dim;
-    slong i;
-}
-key_ref;
-
-/* Cells by dimension, then by key.  */
+/* A chamber's point (see the top of the file), once per sector.  */
 static int
-key_ref_cmp(const void * p, const void * q)
+chamber_point(fmpz * pc, collect * C, const _wc_face_struct * F,
+              wc_error_t err)
 {
-    const key_ref * a = p, * b = q;
+    if (!C->have_k)
+    {
+        if (!chamber_multiplier(C, F->plane, F->point,
+                                C->L->key + C->sec * C->L->m))
+            return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                "internal error: cells: the signs of a "
+                                "sector are wrong");
+        C->have_k = 1;
+    }
+    _fmpz_vec_scalar_mul_fmpz(pc, F->point, 3, C->k);
+    if (F->side > 0)
+        _fmpz_vec_add(pc, pc, F->normal, 3);
+    else
+        _fmpz_vec_sub(pc, pc, F->normal, 3);
+    _wc_zvec3_primitive(pc, C->t);
+    return WC_OK;
+}
 
-    if (a->dim != b->dim)
-        return a->dim < b->dim ? -1 : 1;
-    return memcmp(a->key, b->key, a->len);
+static int
+collect_face(void * data, const _wc_face_struct * F, wc_error_t err)
+{
+    collect * C = data;
+    cell_list * L = C->L;
+    slong m = L->m, q, at, zeros = 0;
+    unsigned char * key;
+
+    if (L->count > L->cap)
+        goto euler;
+    key = L->key + L->count * m;
+    for (q = 0; q < m; q++)
+    {
+        key[q] = (unsigned char) (F->sign[q] + 1);
+        zeros += F->sign[q] == 0;
+    }
+    if (cell_list_add(L, F->dim, &at) >= 0)
+    {
+        if (F->dim == 3)
+            return WC_OK;       /* a chamber met before */
+        return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                            "internal error: cells: two cells of dimension "
+                            "%d with the same signs", F->dim);
+    }
+    if (at >= L->cap)
+        goto euler;
+    if (F->dim == 2)
+    {
+        if (zeros != 1 || F->sign[F->plane] != 0)
+            return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                "internal error: cells: an arc of plane %ld "
+                                "lies on %ld planes", (long) F->plane,
+                                (long) zeros);
+        C->sec = at;
+        C->have_k = 0;
+    }
+    if (F->dim == 3)
+        return chamber_point(L->pt + 3 * at, C, F, err);
+    _fmpz_vec_set(L->pt + 3 * at, F->point, 3);
+    return WC_OK;
+
+euler:
+    return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                        "internal error: cells: more cells than Euler's "
+                        "relation allows");
 }
 
 /* ---------------------------------------------------------------------
@@ -448,6 +340,12 @@ wc_cells_clear(wc_cells_t A)
     wc_cells_init(A);
 }
 
+static int
+vec_ptr_cmp(const void * p, const void * q)
+{
+    return _wc_zvec3_cmp(*(const fmpz * const *) p, *(const fmpz * const *) q);
+}
+
 /* H := the distinct canonical planes of the nonzero rows of N and the
    coordinate planes, sorted.  */
 static void
@@ -466,221 +364,88 @@ collect_planes(fmpz_mat_t H, const fmpz_mat_t N)
     }
     for (i = 0; i < n; i++)
     {
-        _fmpz_vec_set(v + 3 * c, ROW(N, i), 3);
-        if (make_canonical(v + 3 * c, t))
+        _fmpz_vec_set(v + 3 * c, WC_ROW(N, i), 3);
+        if (_wc_zvec3_canonical(v + 3 * c, t))
             c++;
     }
     for (i = 0; i < c; i++)
         ref[i] = v + 3 * i;
     qsort(ref, c, sizeof(fmpz *), vec_ptr_cmp);
     for (i = 0; i < c; i++)
-        if (m == 0 || vec_cmp(ref[m - 1], ref[i]) != 0)
+        if (m == 0 || _wc_zvec3_cmp(ref[m - 1], ref[i]) != 0)
             ref[m++] = ref[i];
     fmpz_mat_clear(H);
     fmpz_mat_init(H, m, 3);
     for (i = 0; i < m; i++)
-        _fmpz_vec_set(ROW(H, i), ref[i], 3);
+        _fmpz_vec_set(WC_ROW(H, i), ref[i], 3);
     fmpz_clear(t);
     flint_free(ref);
     _fmpz_vec_clear(v, 3 * (n + 3));
 }
 
-/* The walk around plane p (see the top of the file).  lines: the k
-   distinct lines on p, with line ids into Ls; ray cells: 1 + 2 line for
-   the canonical direction, 2 + 2 line for its opposite.  */
 typedef struct
 {
-    cell_list * L;
-    const line_set * Ls;
-    angle_ref * ang;        /* room for m */
-    fmpz * hh;              /* h_q . h_p, m entries */
-    slong * hh64;           /* the same in words, with L->h64 */
-    fmpz * mid;
-    fmpz * u;
-    fmpz * w;
-    fmpz_t t;
-    fmpz_t a;
-    fmpz_t k;
+    const unsigned char * key;
+    slong len;
+    slong dim;
+    slong i;
 }
-walk;
+key_ref;
 
-/* Check the derived signs seckey of the sector with point W->mid on
-   plane p against the dot products there, and set W->k to a multiplier
-   for the points of the chambers beside it: k |h_q . mid| > |h_q . h_p|
-   for every q != p.  Returns 0 on a mismatch.  */
+/* Cells by dimension, then by key.  */
 static int
-chamber_multiplier(walk * W, slong p, const unsigned char * seckey)
+key_ref_cmp(const void * p, const void * q)
 {
-    const fmpz_mat_struct * H = W->L->H;
-    const slong * h64 = W->L->h64;
-    slong m = W->L->m, q;
+    const key_ref * a = p, * b = q;
 
-    if (h64 != NULL)
-    {
-        slong x = fmpz_get_si(W->mid), y = fmpz_get_si(W->mid + 1),
-            z = fmpz_get_si(W->mid + 2), k = 0;
-
-        for (q = 0; q < m; q++)
-        {
-            slong d = h64[3 * q] * x + h64[3 * q + 1] * y + h64[3 * q + 2] * z;
-            slong e = W->hh64[q];
-
-            if ((d > 0) - (d < 0) + 1 != seckey[q])
-                return 0;
-            if (q == p || e == 0)
-                continue;
-            e = FLINT_ABS(e) / FLINT_ABS(d);
-            if (e > k)
-                k = e;
-        }
-        fmpz_set_si(W->k, k + 1);
-        return 1;
-    }
-    fmpz_zero(W->k);
-    for (q = 0; q < m; q++)
-    {
-        int s = dot_sgn(ROW(H, q), W->mid, W->a);
-
-        if (s + 1 != seckey[q])
-            return 0;
-        if (q == p || fmpz_is_zero(W->hh + q))
-            continue;
-        fmpz_abs(W->a, W->a);
-        fmpz_abs(W->t, W->hh + q);
-        fmpz_fdiv_q(W->t, W->t, W->a);
-        if (fmpz_cmp(W->t, W->k) > 0)
-            fmpz_set(W->k, W->t);
-    }
-    fmpz_add_ui(W->k, W->k, 1);
-    return 1;
+    if (a->dim != b->dim)
+        return a->dim < b->dim ? -1 : 1;
+    return memcmp(a->key, b->key, a->len);
 }
 
-static int
-walk_plane(walk * W, slong p, const slong * lines, slong k,
-           wc_error_t err)
+/* A := the cells of L on the planes H (taken), sorted.  */
+static void
+cells_sorted(wc_cells_t A, fmpz_mat_t H, const cell_list * L)
 {
-    cell_list * L = W->L;
-    const fmpz_mat_struct * H = L->H;
-    const fmpz * h = ROW(H, p);
-    slong m = L->m, i, j, q, at, sec;
-    int side;
+    slong m = L->m, total = L->count, i, j;
+    key_ref * ref = flint_malloc(sizeof(key_ref) * (total + 1));
 
-    /* Angular order: basis (u, w = h x u) of the plane.  */
-    _fmpz_vec_set(W->u, ROW(W->Ls->v, lines[0]), 3);
-    cross(W->w, h, W->u);
-    for (i = 0; i < k; i++)
+    for (i = 0; i < total; i++)
     {
-        angle_ref * r = W->ang + i;
-        const fmpz * v = ROW(W->Ls->v, lines[i]);
-
-        _fmpz_vec_dot(r->x, v, W->u, 3);
-        _fmpz_vec_dot(r->y, v, W->w, 3);
-        r->line = lines[i];
-        r->o = 1;
-        if (fmpz_sgn(r->y) < 0 || (fmpz_is_zero(r->y) && fmpz_sgn(r->x) < 0))
-        {
-            fmpz_neg(r->x, r->x);
-            fmpz_neg(r->y, r->y);
-            r->o = -1;
-        }
+        ref[i].key = L->key + i * m;
+        ref[i].len = m;
+        ref[i].dim = L->dim[i];
+        ref[i].i = i;
     }
-    qsort(W->ang, k, sizeof(angle_ref), angle_cmp);
-
-    for (q = 0; q < m; q++)
+    qsort(ref, total, sizeof(key_ref), key_ref_cmp);
+    A->nplanes = m;
+    fmpz_mat_swap(A->planes, H);
+    A->count = total;
+    fmpz_mat_clear(A->point);
+    fmpz_mat_init(A->point, total, 3);
+    A->dim = flint_malloc(sizeof(slong) * (total + 1));
+    A->sign = flint_malloc(total * m + 1);
+    for (i = 0; i < total; i++)
     {
-        _fmpz_vec_dot(W->hh + q, ROW(H, q), h, 3);
-        if (L->h64 != NULL)
-            W->hh64[q] = fmpz_get_si(W->hh + q);
+        slong c = ref[i].i;
+
+        _fmpz_vec_set(WC_ROW(A->point, i), L->pt + 3 * c, 3);
+        A->dim[i] = L->dim[c];
+        for (j = 0; j < m; j++)
+            A->sign[i * m + j] = (signed char) (L->key[c * m + j] - 1);
     }
-
-    /* Rays j = 0 .. 2k - 1: line j mod k, turned for j >= k.  Arc j runs
-       from ray j to ray j + 1.  */
-    for (j = 0; j < 2 * k; j++)
-    {
-        const angle_ref * ra = W->ang + (j % k);
-        const angle_ref * rb = W->ang + ((j + 1) % k);
-        int oa = (j < k) ? ra->o : -ra->o;
-        int ob = (j + 1 < k || j + 1 == 2 * k) ? rb->o : -rb->o;
-        slong ca = 1 + 2 * ra->line + (oa < 0);
-        slong cb = 1 + 2 * rb->line + (ob < 0);
-        const unsigned char * ka = L->key + ca * m, * kb = L->key + cb * m;
-        unsigned char * ks;
-        slong zeros = 0;
-        int have_k = 0;
-
-        if (L->count >= L->cap)
-            goto euler;
-        ks = cell_list_next(L);
-        for (q = 0; q < m; q++)
-        {
-            ks[q] = ka[q] != 1 ? ka[q] : kb[q];
-            zeros += ks[q] == 1;
-        }
-        if (zeros != 1 || ks[p] != 1)
-            return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                                "internal error: cells: an arc of plane %ld "
-                                "lies on %ld planes", (long) p, (long) zeros);
-        if (cell_list_add(L, 2, &at) >= 0)
-            return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                                "internal error: cells: a sector was found "
-                                "twice");
-        sec = at;
-        _fmpz_vec_add(W->mid, L->pt + 3 * ca, L->pt + 3 * cb, 3);
-        make_primitive(W->mid, W->t);
-        _fmpz_vec_set(L->pt + 3 * sec, W->mid, 3);
-
-        /* The chambers on both sides: only the sign of p changes.  */
-        for (side = -1; side <= 1; side += 2)
-        {
-            unsigned char * kc;
-            fmpz * pc;
-
-            if (L->count > L->cap)
-                goto euler;
-            kc = cell_list_next(L);
-            memcpy(kc, L->key + sec * m, m);
-            kc[p] = (unsigned char) (1 + side);
-            if (cell_list_add(L, 3, &at) >= 0)
-                continue;
-            if (at >= L->cap)
-                goto euler;
-            if (!have_k)
-            {
-                if (!chamber_multiplier(W, p, L->key + sec * m))
-                    return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                                        "internal error: cells: the derived "
-                                        "signs of a sector are wrong");
-                have_k = 1;
-            }
-            pc = L->pt + 3 * at;
-            _fmpz_vec_scalar_mul_fmpz(pc, W->mid, 3, W->k);
-            if (side > 0)
-                _fmpz_vec_add(pc, pc, h, 3);
-            else
-                _fmpz_vec_sub(pc, pc, h, 3);
-            make_primitive(pc, W->t);
-        }
-    }
-    return WC_OK;
-
-euler:
-    return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                        "internal error: cells: more cells than Euler's "
-                        "relation allows");
+    flint_free(ref);
 }
 
 int
 wc_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
 {
     fmpz_mat_t H;
-    slong m, p, q, i, j, nl, nrays, nsec, nch, total, at;
-    slong * lon, * kon;
-    line_set Ls;
+    slong m, p, nrays, nsec = 0, total;
+    _wc_arrangement_t R;
     cell_list L;
-    walk W;
-    fmpz * v;
-    fmpz_t t;
-    int status = WC_OK;
+    collect C;
+    int status;
 
     wc_cells_clear(A);
     if (fmpz_mat_nrows(normals) > 0 && fmpz_mat_ncols(normals) != 3)
@@ -690,233 +455,89 @@ wc_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
     fmpz_mat_init(H, 0, 3);
     collect_planes(H, normals);
     m = fmpz_mat_nrows(H);
-    fmpz_init(t);
-    v = _fmpz_vec_init(3);
-
-    /* Lines: plane p meets the other m - 1 planes in lon[p (m - 1) ..];
-       after sorting and removing repeats, kon[p] distinct lines.  */
-    line_set_init(&Ls, m * (m - 1) / 2);
-    lon = flint_malloc(sizeof(slong) * (m * (m - 1) + 1));
-    kon = flint_calloc(m, sizeof(slong));
-    for (p = 0; p < m; p++)
-        for (q = p + 1; q < m; q++)
-        {
-            slong l;
-
-            cross(v, ROW(H, p), ROW(H, q));
-            make_canonical(v, t);       /* nonzero: the planes differ */
-            l = line_set_id(&Ls, v);
-            lon[p * (m - 1) + kon[p]++] = l;
-            lon[q * (m - 1) + kon[q]++] = l;
-        }
-    nl = Ls.count;
-    nsec = 0;
-    for (p = 0; p < m; p++)
-    {
-        slong * x = lon + p * (m - 1), c = 0;
-
-        qsort(x, kon[p], sizeof(slong), slong_cmp);
-        for (i = 0; i < kon[p]; i++)
-            if (c == 0 || x[c - 1] != x[i])
-                x[c++] = x[i];
-        kon[p] = c;
-        nsec += 2 * c;
-    }
-    nrays = 2 * nl;
-    nch = 2 - nrays + nsec;         /* Euler's relation, checked below */
-    total = 1 + nrays + nsec + nch;
-    cell_list_init(&L, H, total);
-
-    /* The origin.  */
-    memset(cell_list_next(&L), 1, m);
-    cell_list_add(&L, 0, &at);
-
-    /* The rays: signs by dot products.  */
-    for (i = 0; i < nl; i++)
-    {
-        const fmpz * d = ROW(Ls.v, i);
-        unsigned char * k1 = cell_list_next(&L), * k2 = k1 + m;
-
-        if (L.h64 != NULL)
-        {
-            slong x = fmpz_get_si(d), y = fmpz_get_si(d + 1),
-                z = fmpz_get_si(d + 2);
-            const slong * h64 = L.h64;
-
-            for (q = 0; q < m; q++)
-            {
-                slong e = h64[3 * q] * x + h64[3 * q + 1] * y
-                    + h64[3 * q + 2] * z;
-
-                k1[q] = (unsigned char) (1 + (e > 0) - (e < 0));
-                k2[q] = (unsigned char) (2 - k1[q]);
-            }
-        }
-        else
-            for (q = 0; q < m; q++)
-            {
-                k1[q] = (unsigned char) (1 + dot_sgn(ROW(H, q), d, t));
-                k2[q] = (unsigned char) (2 - k1[q]);
-            }
-        if (cell_list_add(&L, 1, &at) >= 0)
-            break;
-        _fmpz_vec_set(L.pt + 3 * at, d, 3);
-        if (cell_list_add(&L, 1, &at) >= 0)
-            break;
-        _fmpz_vec_neg(L.pt + 3 * at, d, 3);
-    }
-    if (i < nl)
-    {
-        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                              "internal error: cells: two rays with the "
-                              "same signs");
-        goto cleanup;
-    }
-
-    /* Sectors and chambers, plane by plane.  */
-    W.L = &L;
-    W.Ls = &Ls;
-    W.ang = flint_malloc(sizeof(angle_ref) * m);
-    for (i = 0; i < m; i++)
-    {
-        fmpz_init(W.ang[i].x);
-        fmpz_init(W.ang[i].y);
-    }
-    W.hh = _fmpz_vec_init(m);
-    W.hh64 = flint_malloc(sizeof(slong) * m);
-    W.mid = _fmpz_vec_init(3);
-    W.u = _fmpz_vec_init(3);
-    W.w = _fmpz_vec_init(3);
-    fmpz_init(W.t);
-    fmpz_init(W.a);
-    fmpz_init(W.k);
+    status = _wc_arrangement_init(R, H, err);
     for (p = 0; p < m && status == WC_OK; p++)
     {
-        if (kon[p] < 2)
+        if (_wc_arrangement_nlines_on(R, p) < 2)
             status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                   "internal error: cells: plane %ld holds "
-                                  "%ld lines", (long) p, (long) kon[p]);
-        else
-            status = walk_plane(&W, p, lon + p * (m - 1), kon[p], err);
+                                  "%ld lines", (long) p,
+                                  (long) _wc_arrangement_nlines_on(R, p));
+        nsec += 2 * _wc_arrangement_nlines_on(R, p);
     }
-    for (i = 0; i < m; i++)
-    {
-        fmpz_clear(W.ang[i].x);
-        fmpz_clear(W.ang[i].y);
-    }
-    flint_free(W.ang);
-    _fmpz_vec_clear(W.hh, m);
-    flint_free(W.hh64);
-    _fmpz_vec_clear(W.mid, 3);
-    _fmpz_vec_clear(W.u, 3);
-    _fmpz_vec_clear(W.w, 3);
-    fmpz_clear(W.t);
-    fmpz_clear(W.a);
-    fmpz_clear(W.k);
-    if (status != WC_OK)
-        goto cleanup;
-    if (L.count != total)
-    {
+    nrays = 2 * _wc_arrangement_nlines(R);
+    total = 1 + nrays + nsec + (2 - nrays + nsec);  /* Euler, checked */
+    cell_list_init(&L, m, total);
+    collect_init(&C, &L, H);
+    if (status == WC_OK)
+        status = _wc_arrangement_walk(R, collect_face, &C, err);
+    if (status == WC_OK && L.count != total)
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                               "internal error: cells: Euler's relation "
                               "fails: %ld rays - %ld sectors + %ld chambers "
                               "!= 2", (long) nrays, (long) nsec,
                               (long) (L.count - 1 - nrays - nsec));
-        goto cleanup;
-    }
-
-    /* Sorted output.  */
-    {
-        key_ref * ref = flint_malloc(sizeof(key_ref) * total);
-
-        for (i = 0; i < total; i++)
-        {
-            ref[i].key = L.key + i * m;
-            ref[i].len = m;
-            ref[i].dim = L.dim[i];
-            ref[i].i = i;
-        }
-        qsort(ref, total, sizeof(key_ref), key_ref_cmp);
-        A->nplanes = m;
-        fmpz_mat_swap(A->planes, H);
-        A->count = total;
-        fmpz_mat_clear(A->point);
-        fmpz_mat_init(A->point, total, 3);
-        A->dim = flint_malloc(sizeof(slong) * total);
-        A->sign = flint_malloc(total * m);
-        for (i = 0; i < total; i++)
-        {
-            slong c = ref[i].i;
-
-            _fmpz_vec_set(ROW(A->point, i), L.pt + 3 * c, 3);
-            A->dim[i] = L.dim[c];
-            for (j = 0; j < m; j++)
-                A->sign[i * m + j] = (signed char) (L.key[c * m + j] - 1);
-        }
-        flint_free(ref);
-    }
-
-cleanup:
+    if (status == WC_OK)
+        cells_sorted(A, H, &L);
+    collect_clear(&C);
     cell_list_clear(&L);
-    line_set_clear(&Ls);
-    flint_free(lon);
-    flint_free(kon);
+    _wc_arrangement_clear(R);
     fmpz_mat_clear(H);
-    fmpz_clear(t);
-    _fmpz_vec_clear(v, 3);
-    if (status != WC_OK)
-        wc_cells_clear(A);
     return status;
 }
 
 slong
 wc_cells_plane_index(const wc_cells_t A, const fmpz * h)
 {
-    slong lo = 0, hi = A->nplanes, r = -1;
+    slong r = -1;
     fmpz * v = _fmpz_vec_init(3);
+    fmpz * const * hit = NULL;
     fmpz_t t;
 
     fmpz_init(t);
     _fmpz_vec_set(v, h, 3);
-    if (make_canonical(v, t))
-        while (lo < hi)
-        {
-            slong mid = lo + (hi - lo) / 2;
-            int c = vec_cmp(ROW(A->planes, mid), v);
-
-            if (c == 0)
-            {
-                r = mid;
-                break;
-            }
-            if (c < 0)
-                lo = mid + 1;
-            else
-                hi = mid;
-        }
+    if (_wc_zvec3_canonical(v, t) && A->nplanes > 0)
+        hit = bsearch(&v, A->planes->rows, A->nplanes, sizeof(fmpz *),
+                      vec_ptr_cmp);
+    if (hit != NULL)
+        r = hit - A->planes->rows;
     fmpz_clear(t);
     _fmpz_vec_clear(v, 3);
     return r;
 }
 
-/* Order of cells: dimension, then signs (- < 0 < +).  */
-static int
-cell_cmp(const wc_cells_t A, slong i, slong d, const signed char * s)
+/* A cell to look for: its dimension and signs, among the cells of A.  */
+typedef struct
 {
-    slong m = A->nplanes, q;
+    const wc_cells_struct * A;
+    slong dim;
+    const signed char * sign;
+}
+cell_key;
 
-    if (A->dim[i] != d)
-        return A->dim[i] < d ? -1 : 1;
-    for (q = 0; q < m; q++)
-        if (A->sign[i * m + q] != s[q])
-            return A->sign[i * m + q] < s[q] ? -1 : 1;
+/* Order of cells: dimension, then signs (- < 0 < +).  q points into
+   A->dim.  */
+static int
+cell_key_cmp(const void * p, const void * q)
+{
+    const cell_key * k = p;
+    const wc_cells_struct * A = k->A;
+    slong m = A->nplanes, i = (const slong *) q - A->dim, j;
+
+    if (A->dim[i] != k->dim)
+        return k->dim < A->dim[i] ? -1 : 1;
+    for (j = 0; j < m; j++)
+        if (A->sign[i * m + j] != k->sign[j])
+            return k->sign[j] < A->sign[i * m + j] ? -1 : 1;
     return 0;
 }
 
 slong
 wc_cells_locate(const wc_cells_t A, const fmpq * x)
 {
-    slong m = A->nplanes, lo = 0, hi = A->count, q, j, zeros = 0, d, r = -1;
+    slong m = A->nplanes, q, j, zeros = 0, r = -1;
+    const slong * hit;
+    cell_key key;
     signed char * s;
     fmpz * v;
     fmpz_t den, t;
@@ -941,1179 +562,20 @@ wc_cells_locate(const wc_cells_t A, const fmpq * x)
     }
     for (q = 0; q < m; q++)
     {
-        s[q] = (signed char) dot_sgn(ROW(A->planes, q), v, t);
+        s[q] = (signed char) _wc_zvec3_dot_sgn(WC_ROW(A->planes, q), v, t);
         zeros += s[q] == 0;
     }
     /* Distinct planes through a nonzero point: one for a sector, two or
        more for a ray.  */
-    d = !nonzero ? 0 : zeros == 0 ? 3 : zeros == 1 ? 2 : 1;
-    while (lo < hi)
-    {
-        slong mid = lo + (hi - lo) / 2;
-        int c = cell_cmp(A, mid, d, s);
-
-        if (c == 0)
-        {
-            r = mid;
-            break;
-        }
-        if (c < 0)
-            lo = mid + 1;
-        else
-            hi = mid;
-    }
+    key.A = A;
+    key.dim = !nonzero ? 0 : zeros == 0 ? 3 : zeros == 1 ? 2 : 1;
+    key.sign = s;
+    hit = bsearch(&key, A->dim, A->count, sizeof(slong), cell_key_cmp);
+    if (hit != NULL)
+        r = hit - A->dim;
     flint_free(s);
     _fmpz_vec_clear(v, 3);
     fmpz_clear(den);
     fmpz_clear(t);
     return r;
-}
-
-/* ---------------------------------------------------------------------
-   Sets.  */
-
-void
-wc_set_init(wc_set_t S)
-{
-    S->empty = 1;
-    S->interior = 0;
-    S->npieces = 0;
-    S->pieces = NULL;
-}
-
-void
-wc_set_clear(wc_set_t S)
-{
-    slong i;
-
-    for (i = 0; i < S->npieces; i++)
-        wc_cone_clear(S->pieces + i);
-    flint_free(S->pieces);
-    wc_set_init(S);
-}
-
-void
-wc_set_swap(wc_set_t S, wc_set_t T)
-{
-    wc_set_struct t = *S;
-
-    *S = *T;
-    *T = t;
-}
-
-int
-wc_set_contains(const wc_set_t S, const fmpq * g)
-{
-    slong i;
-
-    for (i = 0; i < S->npieces; i++)
-        if (wc_cone_contains(S->pieces + i, g))
-            return 1;
-    return 0;
-}
-
-/* The boxes: a sign set per plane (a mask of bits 1 << (sign + 1)), a
-   hash that is the sum of one word per (plane, set), and the member
-   cells each box holds, as a list.  */
-typedef struct
-{
-    slong m;
-    slong n;                /* boxes made */
-    slong alloc;
-    unsigned char * set;    /* n x m */
-    uint64_t * hash;        /* n */
-    slong * head;           /* n: the first member cell of each box */
-    slong * tail;           /* n: the last one */
-    slong * link;           /* count: the next member cell of its box */
-    uint64_t * word;        /* 8 m: the word of (plane q, set s) at 8q + s */
-    slong * alive;          /* the boxes in use, in creation order */
-    slong nalive;
-}
-box_list;
-
-static void
-box_list_init(box_list * B, const wc_cells_t A)
-{
-    slong m = A->nplanes, i;
-
-    B->m = m;
-    B->n = 0;
-    B->alloc = 16;
-    B->set = flint_malloc(B->alloc * m);
-    B->hash = flint_malloc(sizeof(uint64_t) * B->alloc);
-    B->head = flint_malloc(sizeof(slong) * B->alloc);
-    B->tail = flint_malloc(sizeof(slong) * B->alloc);
-    B->link = flint_malloc(sizeof(slong) * (A->count + 1));
-    B->word = flint_malloc(sizeof(uint64_t) * 8 * m);
-    for (i = 0; i < 8 * m; i++)
-        B->word[i] = mix64(UINT64_C(0x243f6a8885a308d3) + (uint64_t) i);
-    B->alive = NULL;
-    B->nalive = 0;
-}
-
-static void
-box_list_clear(box_list * B)
-{
-    flint_free(B->set);
-    flint_free(B->hash);
-    flint_free(B->head);
-    flint_free(B->tail);
-    flint_free(B->link);
-    flint_free(B->word);
-    flint_free(B->alive);
-}
-
-/* A new box with sets T holding the member cells among idx[0 .. len).  */
-static void
-box_list_add(box_list * B, const unsigned char * T, const slong * idx,
-             slong len, const int * member)
-{
-    slong m = B->m, b = B->n, i, q;
-
-    if (b == B->alloc)
-    {
-        B->alloc *= 2;
-        B->set = flint_realloc(B->set, B->alloc * m);
-        B->hash = flint_realloc(B->hash, sizeof(uint64_t) * B->alloc);
-        B->head = flint_realloc(B->head, sizeof(slong) * B->alloc);
-        B->tail = flint_realloc(B->tail, sizeof(slong) * B->alloc);
-    }
-    memcpy(B->set + b * m, T, m);
-    B->hash[b] = 0;
-    for (q = 0; q < m; q++)
-        B->hash[b] += B->word[8 * q + T[q]];
-    B->head[b] = B->tail[b] = -1;
-    for (i = 0; i < len; i++)
-        if (member[idx[i]])
-        {
-            if (B->tail[b] < 0)
-                B->head[b] = idx[i];
-            else
-                B->link[B->tail[b]] = idx[i];
-            B->tail[b] = idx[i];
-            B->link[idx[i]] = -1;
-        }
-    B->n++;
-}
-
-/* Merge along plane p every group of boxes equal off p whose sets on p
-   unite to a convex set.  tab (size slots, a power of two, at least twice
-   nalive), next and last: scratch.  Returns the number of merges.  */
-static slong
-merge_plane(box_list * B, slong p, slong * tab, slong size, slong * next,
-            slong * last)
-{
-    slong m = B->m, i, j, c, merged = 0;
-
-    for (i = 0; i < size; i++)
-        tab[i] = -1;
-    for (i = 0; i < B->nalive; i++)
-    {
-        slong b = B->alive[i];
-        const unsigned char * sb = B->set + b * m;
-        uint64_t h = B->hash[b] - B->word[8 * p + sb[p]];
-
-        next[b] = -1;
-        last[b] = b;
-        for (j = (slong) (h & (size - 1)); tab[j] >= 0;
-             j = (j + 1) & (size - 1))
-        {
-            slong g = tab[j];
-            const unsigned char * sg = B->set + g * m;
-
-            if (B->hash[g] - B->word[8 * p + sg[p]] == h
-                && memcmp(sb, sg, p) == 0
-                && memcmp(sb + p + 1, sg + p + 1, m - p - 1) == 0)
-                break;
-        }
-        if (tab[j] < 0)
-            tab[j] = b;
-        else
-        {
-            slong g = tab[j];
-
-            next[last[g]] = b;
-            last[g] = b;
-            last[b] = -2;       /* not a group's first box */
-        }
-    }
-
-    /* Merge each group into its first box: at most three boxes, with
-       disjoint sets on p (the boxes are disjoint and tight: a sign on p
-       shared by two of them would be a cell's, in both); two or three
-       boxes with disjoint sets merge pairwise, in some order, into their
-       union unless that is {-, +}.  */
-    for (i = 0; i < B->nalive; i++)
-    {
-        slong b = B->alive[i], g;
-        unsigned char u = 0;
-        int overlap = 0;
-
-        if (last[b] == -2 || next[b] < 0)
-            continue;
-        for (g = b; g >= 0; g = next[g])
-        {
-            overlap |= (u & B->set[g * m + p]) != 0;
-            u |= B->set[g * m + p];
-        }
-        if (u == SET_BAD || overlap)
-            continue;
-        B->hash[b] += B->word[8 * p + u] - B->word[8 * p + B->set[b * m + p]];
-        B->set[b * m + p] = u;
-        for (g = next[b]; g >= 0; g = next[g])
-        {
-            B->link[B->tail[b]] = B->head[g];
-            B->tail[b] = B->tail[g];
-            last[g] = -3;       /* gone */
-            merged++;
-        }
-    }
-    for (i = 0, c = 0; i < B->nalive; i++)
-        if (last[B->alive[i]] != -3)
-            B->alive[c++] = B->alive[i];
-    B->nalive = c;
-    return merged;
-}
-
-/* The tightest box holding a list of cells: per plane, the signs they
-   take.  */
-static void
-tight_box(unsigned char * T, const wc_cells_t A, const slong * idx,
-          slong len, const int * member)
-{
-    slong m = A->nplanes, i, q;
-
-    memset(T, 0, m);
-    for (i = 0; i < len; i++)
-        if (member[idx[i]])
-        {
-            const signed char * s = A->sign + idx[i] * m;
-
-            for (q = 0; q < m; q++)
-                T[q] |= (unsigned char) (1 << (s[q] + 1));
-        }
-}
-
-static int
-in_box(const unsigned char * T, const signed char * s, slong m)
-{
-    slong q;
-
-    for (q = 0; q < m; q++)
-        if (!(T[q] & (1 << (s[q] + 1))))
-            return 0;
-    return 1;
-}
-
-/* Incidences between cells one dimension apart: the two chambers beside
-   every sector, the sectors around every ray, and the other way round,
-   the two rays bounding every sector and the facets of every chamber.  */
-typedef struct
-{
-    slong * plane;      /* count: a sector's plane, else -1 */
-    slong * side;       /* 2 count: a sector's chambers on the - and the
-                           + side of its plane */
-    slong * ray;        /* 2 count: the rays bounding a sector */
-    slong * off;        /* count + 1: the sectors around ray r are */
-    slong * around;     /* around[off[r] .. off[r + 1]) */
-    slong * foff;       /* count + 1: the facets of chamber c are */
-    slong * facet;      /* facet[foff[c] .. foff[c + 1]) */
-}
-incidence;
-
-static void
-incidence_clear(incidence * I)
-{
-    flint_free(I->plane);
-    flint_free(I->side);
-    flint_free(I->ray);
-    flint_free(I->off);
-    flint_free(I->around);
-    flint_free(I->foff);
-    flint_free(I->facet);
-}
-
-/* The cell of dimension d with signs t, or -1; slot: a hash table of
-   size slots on the cells of dimensions 2 and 3, h their hashes.  */
-static slong
-find_cell(const wc_cells_t A, const slong * slot, slong size,
-          const uint64_t * h, const signed char * t, slong d)
-{
-    slong m = A->nplanes, j;
-    uint64_t g = bytes_hash((const unsigned char *) t, m);
-
-    for (j = (slong) (g & (size - 1)); slot[j] >= 0; j = (j + 1) & (size - 1))
-        if (h[slot[j]] == g && A->dim[slot[j]] == d
-            && memcmp(A->sign + slot[j] * m, t, m) == 0)
-            return slot[j];
-    return -1;
-}
-
-/* The chambers beside a sector: its signs with its plane's turned to -
-   and +.  The sectors around ray r: on each plane p through r, the two
-   beside it have r's signs but for the other planes q through r, where
-   they take the sign of h_q . (+-h_p x r).  Returns 0 when some sector
-   lacks its two chambers or its two rays (an inconsistent A).  */
-static int
-incidence_init(incidence * I, const wc_cells_t A)
-{
-    slong m = A->nplanes, count = A->count, size, i, j, q, p, side, n = 0;
-    slong alloc = 16;
-    slong * slot;
-    uint64_t * h = flint_malloc(sizeof(uint64_t) * (count + 1));
-    signed char * t = flint_malloc(m + 1);
-    fmpz * d = _fmpz_vec_init(3);
-    fmpz_t x;
-    int ok = 1;
-
-    fmpz_init(x);
-    I->plane = flint_malloc(sizeof(slong) * (count + 1));
-    I->side = flint_malloc(sizeof(slong) * 2 * (count + 1));
-    I->ray = flint_malloc(sizeof(slong) * 2 * (count + 1));
-    I->off = flint_malloc(sizeof(slong) * (count + 1));
-    I->around = flint_malloc(sizeof(slong) * alloc);
-    I->foff = flint_calloc(count + 2, sizeof(slong));
-    size = pow2_at_least(2 * count + 2);
-    slot = flint_malloc(sizeof(slong) * size);
-    for (j = 0; j < size; j++)
-        slot[j] = -1;
-    for (i = 0; i < count; i++)
-        if (A->dim[i] >= 2)
-        {
-            h[i] = bytes_hash((const unsigned char *) (A->sign + i * m), m);
-            for (j = (slong) (h[i] & (size - 1)); slot[j] >= 0;
-                 j = (j + 1) & (size - 1))
-                ;
-            slot[j] = i;
-        }
-    for (i = 0; i < count; i++)
-    {
-        const signed char * s = A->sign + i * m;
-
-        I->side[2 * i] = I->side[2 * i + 1] = I->plane[i] = -1;
-        I->ray[2 * i] = I->ray[2 * i + 1] = -1;
-        I->off[i] = n;
-        if (A->dim[i] == 2)
-        {
-            memcpy(t, s, m);
-            for (q = 0; q < m && t[q] != 0; q++)
-                ;
-            I->plane[i] = q;
-            for (side = 0; side < 2; side++)
-            {
-                t[q] = (signed char) (2 * side - 1);
-                I->side[2 * i + side] = find_cell(A, slot, size, h, t, 3);
-                ok &= I->side[2 * i + side] >= 0;
-            }
-        }
-        else if (A->dim[i] == 1)
-            for (p = 0; p < m; p++)
-            {
-                if (s[p] != 0)
-                    continue;
-                cross(d, ROW(A->planes, p), ROW(A->point, i));
-                for (side = -1; side <= 1; side += 2)
-                {
-                    slong c;
-
-                    memcpy(t, s, m);
-                    for (q = 0; q < m; q++)
-                        if (s[q] == 0 && q != p)
-                            t[q] = (signed char)
-                                (side * dot_sgn(ROW(A->planes, q), d, x));
-                    c = find_cell(A, slot, size, h, t, 2);
-                    if (c < 0)
-                    {
-                        ok = 0;
-                        continue;
-                    }
-                    if (n == alloc)
-                    {
-                        alloc *= 2;
-                        I->around = flint_realloc(I->around,
-                                                  sizeof(slong) * alloc);
-                    }
-                    I->around[n++] = c;
-                }
-            }
-    }
-    I->off[count] = n;
-
-    /* The other way round.  */
-    for (i = 0; i < count; i++)
-        for (j = I->off[i]; j < I->off[i + 1]; j++)
-        {
-            slong s = I->around[j];
-
-            if (I->ray[2 * s] < 0)
-                I->ray[2 * s] = i;
-            else if (I->ray[2 * s + 1] < 0)
-                I->ray[2 * s + 1] = i;
-            else
-                ok = 0;
-        }
-    for (i = 0; i < count; i++)
-        if (A->dim[i] == 2)
-        {
-            ok &= I->ray[2 * i + 1] >= 0;
-            for (side = 0; side < 2 && ok; side++)
-                I->foff[I->side[2 * i + side] + 2]++;
-        }
-    for (i = 0; i < count; i++)
-        I->foff[i + 2] += I->foff[i + 1];
-    I->facet = flint_malloc(sizeof(slong) * (I->foff[count + 1] + 1));
-    for (i = 0; i < count && ok; i++)
-        if (A->dim[i] == 2)
-            for (side = 0; side < 2; side++)
-                I->facet[I->foff[I->side[2 * i + side] + 1]++] = i;
-
-    flint_free(slot);
-    flint_free(h);
-    flint_free(t);
-    _fmpz_vec_clear(d, 3);
-    fmpz_clear(x);
-    return ok;
-}
-
-/* Top-down: the member cells of a region (a node: a range of idx, with
-   the non-members of the region that might matter) go into the tightest
-   box T holding them.  When T holds no non-member, T is a piece: it is
-   exactly the union of the member cells in it.  Otherwise the region is
-   split along one plane p into two convex parts of T's sign set on p, so
-   that every member goes to one part and each part holds fewer members.
-   The plane is a wall of the set, when there is one: it holds one of two
-   incident cells of the region (a sector and a chamber beside it, else a
-   ray and a sector around it) but not the other, one a member and the
-   other not; cutting along other planes only cuts pieces apart.  The
-   plane and the parts are chosen to leave as many members as possible in
-   parts without non-members, then to leave the fewest cells of the
-   minority kind in each part.  The pieces go to B; I is set up when
-   needed (I->plane != NULL then).  Returns 0 when A is inconsistent.  */
-static int
-split_boxes(box_list * B, incidence * I, const wc_cells_t A,
-            const int * member)
-{
-    slong m = A->nplanes, count = A->count, i, q, top = 0, stamp = 0;
-    slong * idx = flint_malloc(sizeof(slong) * count);
-    slong * tmp = flint_malloc(sizeof(slong) * count);
-    slong * stack = flint_malloc(sizeof(slong) * 2 * (count + 1));
-    slong * cm = flint_malloc(sizeof(slong) * 3 * m);
-    slong * cb = flint_malloc(sizeof(slong) * 3 * m);
-    slong * wall = flint_malloc(sizeof(slong) * m);
-    slong * cp = flint_malloc(sizeof(slong) * m);
-    slong * mark = NULL;
-    unsigned char * T = flint_malloc(m);
-    int ok = 1;
-
-    for (i = 0; i < count; i++)
-        idx[i] = i;
-    stack[top++] = 0;
-    stack[top++] = count;
-    while (top > 0 && ok)
-    {
-        slong hi = stack[--top], lo = stack[--top], len, nm = 0, nb = 0;
-        slong p = -1, bp = -1, bmis = 0, n1 = 0, n2 = 0, walls = 0;
-        slong ncp, j;
-        unsigned char part = 0;
-
-        len = hi - lo;
-        tight_box(T, A, idx + lo, len, member);
-        for (q = 0; q < m && p < 0; q++)
-            if (T[q] == SET_BAD)
-            {
-                p = q;          /* T is no box: split into - and + */
-                part = 1;
-            }
-        if (p < 0)
-        {
-            /* The non-members in T.  */
-            slong c = lo;
-
-            for (i = lo; i < hi; i++)
-                if (member[idx[i]] || in_box(T, A->sign + idx[i] * m, m))
-                {
-                    nb += !member[idx[i]];
-                    idx[c++] = idx[i];
-                }
-            hi = c;
-            len = hi - lo;
-            if (nb == 0)
-            {
-                box_list_add(B, T, idx + lo, len, member);
-                continue;
-            }
-            nm = len - nb;
-
-            /* Walls: a chamber and a sector beside it, one a member and
-               the other not, both in the region, are separated by the
-               sector's plane.  Failing those, a sector and a ray on its
-               boundary, separated by the planes through the ray but the
-               sector's.  */
-            if (I->plane == NULL)
-            {
-                ok = incidence_init(I, A);
-                mark = flint_calloc(count, sizeof(slong));
-                if (!ok)
-                    break;
-            }
-            stamp++;
-            for (i = lo; i < hi; i++)
-                mark[idx[i]] = stamp;
-            memset(wall, 0, sizeof(slong) * m);
-            for (i = lo; i < hi; i++)
-            {
-                slong c = idx[i], k;
-
-                for (k = 0; k < 2 && I->plane[c] >= 0; k++)
-                {
-                    slong e = I->side[2 * c + k];
-
-                    if (mark[e] == stamp
-                        && (member[e] != 0) != (member[c] != 0))
-                    {
-                        walls += wall[I->plane[c]] == 0;
-                        wall[I->plane[c]]++;
-                    }
-                }
-            }
-            for (i = lo; i < hi && walls == 0; i++)
-            {
-                slong c = idx[i], k;
-
-                for (k = I->off[c]; k < I->off[c + 1]; k++)
-                {
-                    slong e = I->around[k];
-
-                    if (mark[e] != stamp
-                        || (member[e] != 0) == (member[c] != 0))
-                        continue;
-                    for (q = 0; q < m; q++)
-                        if (A->sign[c * m + q] == 0 && q != I->plane[e])
-                            wall[q]++;
-                }
-            }
-            for (q = 0; q < m && walls == 0; q++)
-                walls += wall[q] > 0;
-
-            /* Members and non-members by sign on the candidate planes:
-               the walls (else all), where the members take two signs or
-               more.  */
-            for (q = 0, ncp = 0; q < m; q++)
-                if ((walls == 0 || wall[q] > 0)
-                    && T[q] != 1 && T[q] != 2 && T[q] != 4)
-                    cp[ncp++] = q;
-            memset(cm, 0, sizeof(slong) * 3 * m);
-            memset(cb, 0, sizeof(slong) * 3 * m);
-            for (i = lo; i < hi; i++)
-            {
-                const signed char * s = A->sign + idx[i] * m;
-                slong * c3 = member[idx[i]] ? cm : cb, j;
-
-                for (j = 0; j < ncp; j++)
-                    c3[3 * cp[j] + s[cp[j]] + 1]++;
-            }
-            for (j = 0; j < ncp; j++)
-            {
-                unsigned char cand[2];
-                slong nc = 0, k;
-
-                q = cp[j];
-                if (T[q] == SET_ALL)
-                {
-                    cand[nc++] = 1;     /* {-} | {0, +} */
-                    cand[nc++] = 3;     /* {-, 0} | {+} */
-                }
-                else if (T[q] == 3)
-                    cand[nc++] = 1;     /* {-} | {0} */
-                else if (T[q] == 6)
-                    cand[nc++] = 2;     /* {0} | {+} */
-                for (k = 0; k < nc; k++)
-                {
-                    slong m1 = 0, b1 = 0, m2, b2, pure, mis, s;
-
-                    for (s = 0; s < 3; s++)
-                        if (cand[k] & (1 << s))
-                        {
-                            m1 += cm[3 * q + s];
-                            b1 += cb[3 * q + s];
-                        }
-                    m2 = nm - m1;
-                    b2 = nb - b1;
-                    pure = (b1 == 0 ? m1 : 0) + (b2 == 0 ? m2 : 0);
-                    mis = FLINT_MIN(m1, b1) + FLINT_MIN(m2, b2);
-                    if (p < 0 || pure > bp || (pure == bp && mis < bmis))
-                    {
-                        p = q;
-                        part = cand[k];
-                        bp = pure;
-                        bmis = mis;
-                    }
-                }
-            }
-        }
-
-        /* Split: part first, the rest of T's set on p next; cells with
-           other signs on p are non-members and go.  */
-        for (i = lo; i < hi; i++)
-        {
-            slong c = idx[i];
-            int bit = 1 << (A->sign[c * m + p] + 1);
-
-            if (part & bit)
-                idx[lo + n1++] = c;
-            else if (T[p] & bit)
-                tmp[n2++] = c;
-        }
-        memcpy(idx + lo + n1, tmp, sizeof(slong) * n2);
-        stack[top++] = lo + n1;
-        stack[top++] = lo + n1 + n2;
-        stack[top++] = lo;
-        stack[top++] = lo + n1;
-    }
-    flint_free(idx);
-    flint_free(tmp);
-    flint_free(stack);
-    flint_free(cm);
-    flint_free(cb);
-    flint_free(wall);
-    flint_free(cp);
-    flint_free(mark);
-    flint_free(T);
-    return ok;
-}
-
-/* Rows for a box: h_q for the sets {-, 0} (non-strict) and {-}
-   (strict), -h_q for {0, +} and {+}, h_q as an equality for {0}; all
-   others constrain nothing.  */
-static void
-direct_rows(fmpq_mat_t E, fmpq_mat_t I, fmpq_mat_t S, const wc_cells_t A,
-            const unsigned char * set)
-{
-    slong m = A->nplanes, q, ne = 0, ni = 0, ns = 0, j;
-
-    for (q = 0; q < m; q++)
-    {
-        ne += set[q] == 2;
-        ni += set[q] == 3 || set[q] == 6;
-        ns += set[q] == 1 || set[q] == 4;
-    }
-    fmpq_mat_clear(E);
-    fmpq_mat_clear(I);
-    fmpq_mat_clear(S);
-    fmpq_mat_init(E, ne, 3);
-    fmpq_mat_init(I, ni, 3);
-    fmpq_mat_init(S, ns, 3);
-    ne = ni = ns = 0;
-    for (q = 0; q < m; q++)
-    {
-        fmpq_mat_struct * M;
-        slong r;
-        int neg = set[q] == 6 || set[q] == 4;
-
-        if (set[q] == 2)
-            M = E, r = ne++;
-        else if (set[q] == 3 || set[q] == 6)
-            M = I, r = ni++;
-        else if (set[q] == 1 || set[q] == 4)
-            M = S, r = ns++;
-        else
-            continue;
-        for (j = 0; j < 3; j++)
-        {
-            fmpq_set_fmpz(fmpq_mat_entry(M, r, j),
-                          fmpz_mat_entry(A->planes, q, j));
-            if (neg)
-                fmpq_neg(fmpq_mat_entry(M, r, j), fmpq_mat_entry(M, r, j));
-        }
-    }
-}
-
-static void
-fmpz_mat_to_fmpq_mat(fmpq_mat_t out, const fmpz_mat_t A)
-{
-    fmpq_mat_clear(out);
-    fmpq_mat_init(out, fmpz_mat_nrows(A), fmpz_mat_ncols(A));
-    if (fmpz_mat_nrows(A) > 0)
-        fmpq_mat_set_fmpz_mat(out, A);
-}
-
-/* C := the box with sign sets set, as an NNC cone (see the top of the
-   file).  cand[0 .. nc): ray cells among which are all the rays of the
-   arrangement on two constraining planes in the closed box (the extreme
-   rays of its closure); others are filtered out.  */
-static int
-box_cone(wc_cone_t C, const wc_cells_t A, const unsigned char * set,
-         const slong * cand, slong nc, wc_error_t err)
-{
-    slong m = A->nplanes, q, i, j, nn = 0, ne = 0, ns, k, words;
-    slong * cons = flint_malloc(sizeof(slong) * (m + 1));
-    slong * ext = NULL, * st = NULL;
-    unsigned char * closed = flint_malloc(m + 1);
-    ulong * bits = NULL;
-    int * keep = NULL, pointed = 0, status;
-    fmpq_mat_t E, I, S, R;
-    fmpz * c = _fmpz_vec_init(3);
-    fmpz_t t;
-    wc_cone_t C0;
-
-    fmpz_init(t);
-    fmpq_mat_init(E, 0, 3);
-    fmpq_mat_init(I, 0, 3);
-    fmpq_mat_init(S, 0, 3);
-    fmpq_mat_init(R, 0, 3);
-    wc_cone_init(C0, 3);
-
-    /* The constraining planes, and whether their normals span R^3.  */
-    for (q = 0; q < m; q++)
-    {
-        closed[q] = set[q] | ((set[q] & SET_BAD) ? 2 : 0);
-        if (set[q] != SET_ALL)
-            cons[nn++] = q;
-    }
-    if (nn >= 3)
-    {
-        cross(c, ROW(A->planes, cons[0]), ROW(A->planes, cons[1]));
-        for (i = 2; i < nn && !pointed; i++)
-            pointed = dot_sgn(ROW(A->planes, cons[i]), c, t) != 0;
-    }
-    if (!pointed)
-    {
-        direct_rows(E, I, S, A, set);
-        goto convert;
-    }
-
-    /* Extreme rays of the closure: ray cells in the closed box on at
-       least two constraining planes.  At most m of them.  */
-    ext = flint_malloc(sizeof(slong) * (m + 1));
-    for (k = 0; k < nc; k++)
-    {
-        const signed char * s = A->sign + cand[k] * m;
-        slong z = 0;
-
-        for (j = 0; j < nn; j++)
-        {
-            q = cons[j];
-            if (!(closed[q] & (1 << (s[q] + 1))))
-                break;
-            z += s[q] == 0;
-        }
-        if (j == nn && z >= 2)
-        {
-            if (ne == m)
-            {
-                status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                                      "internal error: a sign box has more "
-                                      "extreme rays than planes");
-                goto cleanup;
-            }
-            ext[ne++] = cand[k];
-        }
-    }
-    if (ne == 0)
-    {
-        /* The closure is the origin, and so is the box.  */
-        fmpq_mat_clear(E);
-        fmpq_mat_init(E, 3, 3);
-        fmpq_mat_one(E);
-        goto convert;
-    }
-    fmpq_mat_clear(R);
-    fmpq_mat_init(R, ne, 3);
-    for (i = 0; i < ne; i++)
-        for (j = 0; j < 3; j++)
-            fmpq_set_fmpz(fmpq_mat_entry(R, i, j),
-                          fmpz_mat_entry(A->point, ext[i], j));
-    if ((status = wc_cone_set_generators(C0, R, NULL, err)) != WC_OK)
-        goto cleanup;
-    fmpz_mat_to_fmpq_mat(E, C0->eqs);
-    fmpz_mat_to_fmpq_mat(I, C0->ineqs);
-
-    /* Strict planes: one for each maximal set of closure rays they vanish
-       on (a face of the closure lies on a strict plane iff its rays do).  */
-    k = fmpz_mat_nrows(C0->rays);
-    words = k / FLINT_BITS + 1;
-    st = flint_malloc(sizeof(slong) * (m + 1));
-    ns = 0;
-    for (q = 0; q < m; q++)
-        if (set[q] == 1 || set[q] == 4)
-            st[ns++] = q;
-    bits = flint_calloc(ns * words + 1, sizeof(ulong));
-    keep = flint_malloc(sizeof(int) * (ns + 1));
-    for (i = 0; i < ns; i++)
-        for (j = 0; j < k; j++)
-            if (dot_sgn(ROW(A->planes, st[i]), ROW(C0->rays, j), t) == 0)
-                bits[i * words + j / FLINT_BITS] |= UWORD(1) << (j % FLINT_BITS);
-    for (i = 0; i < ns; i++)
-    {
-        /* Drop i when some j vanishes on more rays, or on the same rays
-           and comes first.  */
-        keep[i] = 1;
-        for (j = 0; j < ns && keep[i]; j++)
-        {
-            slong w;
-            int sub = 1, same = 1;
-
-            if (j == i)
-                continue;
-            for (w = 0; w < words; w++)
-            {
-                ulong a = bits[i * words + w], b = bits[j * words + w];
-
-                sub &= (a & ~b) == 0;
-                same &= a == b;
-            }
-            if (sub && (!same || j < i))
-                keep[i] = 0;
-        }
-    }
-    for (i = 0, j = 0; i < ns; i++)
-        j += keep[i];
-    fmpq_mat_clear(S);
-    fmpq_mat_init(S, j, 3);
-    for (i = 0, j = 0; i < ns; i++)
-        if (keep[i])
-        {
-            slong e;
-
-            for (e = 0; e < 3; e++)
-            {
-                fmpq_set_fmpz(fmpq_mat_entry(S, j, e),
-                              fmpz_mat_entry(A->planes, st[i], e));
-                if (set[st[i]] == 4)
-                    fmpq_neg(fmpq_mat_entry(S, j, e), fmpq_mat_entry(S, j, e));
-            }
-            j++;
-        }
-
-convert:
-    status = wc_cone_set_hrep(C, E, I, S, err);
-    if (status == WC_OK && C->empty)
-        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                              "internal error: a sign box with a member "
-                              "cell came out empty");
-
-cleanup:
-    fmpq_mat_clear(E);
-    fmpq_mat_clear(I);
-    fmpq_mat_clear(S);
-    fmpq_mat_clear(R);
-    wc_cone_clear(C0);
-    flint_free(cons);
-    flint_free(ext);
-    flint_free(st);
-    flint_free(closed);
-    flint_free(bits);
-    flint_free(keep);
-    _fmpz_vec_clear(c, 3);
-    fmpz_clear(t);
-    return status;
-}
-
-static int
-mat_cmp(const fmpz_mat_t a, const fmpz_mat_t b)
-{
-    slong ra = fmpz_mat_nrows(a), rb = fmpz_mat_nrows(b), i, j;
-    int c;
-
-    for (i = 0; i < ra && i < rb; i++)
-        for (j = 0; j < fmpz_mat_ncols(a); j++)
-            if ((c = fmpz_cmp(fmpz_mat_entry(a, i, j),
-                              fmpz_mat_entry(b, i, j))) != 0)
-                return c;
-    return (ra > rb) - (ra < rb);
-}
-
-/* Pieces: by decreasing dimension, then the canonical form: rays,
-   inequalities, equalities (which make up the closure), then the
-   included flags of the faces.  The rest only makes the order total on
-   any cones.  */
-static int
-piece_cmp(const void * p, const void * q)
-{
-    const wc_cone_struct * a = p, * b = q;
-    slong f, i;
-    int c;
-
-    if (a->dim != b->dim)
-        return a->dim > b->dim ? -1 : 1;
-    if ((c = mat_cmp(a->rays, b->rays)) != 0
-        || (c = mat_cmp(a->ineqs, b->ineqs)) != 0
-        || (c = mat_cmp(a->eqs, b->eqs)) != 0)
-        return c;
-    for (f = 0; f < a->nfaces && f < b->nfaces; f++)
-        if (a->faces[f].included != b->faces[f].included)
-            return a->faces[f].included < b->faces[f].included ? -1 : 1;
-    if (a->d != b->d)
-        return a->d < b->d ? -1 : 1;
-    if ((c = mat_cmp(a->lines, b->lines)) != 0)
-        return c;
-    if (a->nfaces != b->nfaces)
-        return a->nfaces < b->nfaces ? -1 : 1;
-    for (f = 0; f < a->nfaces; f++)
-    {
-        const wc_face_struct * x = a->faces + f, * y = b->faces + f;
-
-        if (x->dim != y->dim)
-            return x->dim < y->dim ? -1 : 1;
-        for (i = 0; i < x->nrays && i < y->nrays; i++)
-            if (x->rays[i] != y->rays[i])
-                return x->rays[i] < y->rays[i] ? -1 : 1;
-        if (x->nrays != y->nrays)
-            return x->nrays < y->nrays ? -1 : 1;
-    }
-    return 0;
-}
-
-int
-wc_set_from_cells(wc_set_t S, const wc_cells_t A, const int * member,
-                  wc_error_t err)
-{
-    slong m = A->nplanes, count = A->count, n = 0, i, q, size, since;
-    slong nrays = 0, nc, stamp = 0, b;
-    slong * tab, * next, * last, * rays, * cand = NULL, * mark = NULL;
-    incidence I = {NULL, NULL, NULL, NULL, NULL, NULL, NULL};
-    box_list B;
-    int status = WC_OK;
-
-    wc_set_clear(S);
-    for (i = 0; i < count; i++)
-        n += member[i] != 0;
-    if (n == 0)
-        return WC_OK;
-
-    /* Boxes from the top-down split, merged bottom-up next.  */
-    box_list_init(&B, A);
-    if (!split_boxes(&B, &I, A, member))
-        goto inconsistent;
-    n = B.n;
-    B.alive = flint_malloc(sizeof(slong) * n);
-    B.nalive = n;
-    for (i = 0; i < n; i++)
-        B.alive[i] = i;
-    size = pow2_at_least(2 * n + 2);
-    tab = flint_malloc(sizeof(slong) * size);
-    next = flint_malloc(sizeof(slong) * n);
-    last = flint_malloc(sizeof(slong) * n);
-    for (q = 0, since = 0; since < m && B.nalive > 1; q = (q + 1) % m)
-    {
-        if (merge_plane(&B, q, tab, size, next, last) > 0)
-            since = 0;
-        else
-            since++;
-    }
-    flint_free(tab);
-    flint_free(next);
-    flint_free(last);
-
-    /* The pieces.  Candidates for the extreme rays of a box: all the ray
-       cells, when few boxes make that cheap, else the rays bounding the
-       box's member cells (every extreme ray of the closure is one).  */
-    rays = flint_malloc(sizeof(slong) * (count + 1));
-    for (i = 0; i < count; i++)
-        if (A->dim[i] == 1)
-            rays[nrays++] = i;
-    if (I.plane == NULL && B.nalive * nrays > count * m)
-    {
-        if (!incidence_init(&I, A))
-        {
-            flint_free(rays);
-            goto inconsistent;
-        }
-    }
-    if (I.plane != NULL)
-    {
-        cand = flint_malloc(sizeof(slong) * (nrays + 1));
-        mark = flint_calloc(count, sizeof(slong));
-    }
-    S->pieces = flint_malloc(sizeof(wc_cone_struct) * B.nalive);
-    for (b = 0; b < B.nalive && status == WC_OK; b++)
-    {
-        slong j, k, x = B.alive[b];
-        const slong * use = rays;
-
-        nc = nrays;
-        if (cand != NULL)
-        {
-            nc = 0;
-            stamp++;
-#define CAND(r) do { slong r_ = (r); if (mark[r_] != stamp) \
-            { mark[r_] = stamp; cand[nc++] = r_; } } while (0)
-            for (i = B.head[x]; i >= 0; i = B.link[i])
-                if (A->dim[i] == 1)
-                    CAND(i);
-                else if (A->dim[i] == 2)
-                {
-                    CAND(I.ray[2 * i]);
-                    CAND(I.ray[2 * i + 1]);
-                }
-                else if (A->dim[i] == 3)
-                    for (j = I.foff[i]; j < I.foff[i + 1]; j++)
-                        for (k = 0; k < 2; k++)
-                            CAND(I.ray[2 * I.facet[j] + k]);
-#undef CAND
-            use = cand;
-        }
-        wc_cone_init(S->pieces + b, 3);
-        S->npieces++;
-        status = box_cone(S->pieces + b, A, B.set + x * m, use, nc, err);
-    }
-    flint_free(rays);
-    flint_free(cand);
-    flint_free(mark);
-    incidence_clear(&I);
-    box_list_clear(&B);
-    if (status != WC_OK)
-    {
-        wc_set_clear(S);
-        return status;
-    }
-    qsort(S->pieces, S->npieces, sizeof(wc_cone_struct), piece_cmp);
-    S->empty = 0;
-    for (i = 0; i < S->npieces; i++)
-        S->interior |= S->pieces[i].dim == 3;
-    return WC_OK;
-
-inconsistent:
-    incidence_clear(&I);
-    box_list_clear(&B);
-    return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                        "internal error: the cells are inconsistent (a "
-                        "sector without its two chambers or rays)");
-}
-
-void
-wc_set_sort(wc_set_t S)
-{
-    if (S->npieces > 1)
-        qsort(S->pieces, S->npieces, sizeof(wc_cone_struct), piece_cmp);
-}
-
-/* ---------------------------------------------------------------------
-   Merging pieces.  */
-
-/* Merge pieces of S whose union is convex, until none is: the pieces
-   from sign boxes follow every plane of the arrangement, also where the
-   set does not change across it.  P_i u P_j is a convex NNC cone N iff
-   (i) every facet of H = cl conv (P_i u P_j) lies on a plane of the
-   arrangement (so every cell is inside H or outside it), (ii) the faces of
-   H whose relative-interior point lies in P_i u P_j form an up-set (then
-   N, those faces' union, is a convex NNC cone), and (iii) every cell lies
-   in N iff it lies in P_i u P_j (both are unions of cells).  Then N
-   replaces the two; the pieces stay pairwise disjoint with the same
-   union.  */
-static int
-try_merge(wc_cone_t N, const wc_cone_t A, const wc_cone_t B,
-          const wc_cells_t cells, int * ok, wc_error_t err)
-{
-    slong ra = fmpz_mat_nrows(A->rays), rb = fmpz_mat_nrows(B->rays);
-    slong la = fmpz_mat_nrows(A->lines), lb = fmpz_mat_nrows(B->lines);
-    slong i, j, k, f;
-    fmpq_mat_t R, L;
-    fmpq g[3];
-    int status;
-
-    *ok = 0;
-    fmpq_mat_init(R, ra + rb, 3);
-    fmpq_mat_init(L, la + lb, 3);
-    for (i = 0; i < ra + rb; i++)
-        for (k = 0; k < 3; k++)
-            fmpq_set_fmpz(fmpq_mat_entry(R, i, k), i < ra
-                          ? fmpz_mat_entry(A->rays, i, k)
-                          : fmpz_mat_entry(B->rays, i - ra, k));
-    for (i = 0; i < la + lb; i++)
-        for (k = 0; k < 3; k++)
-            fmpq_set_fmpz(fmpq_mat_entry(L, i, k), i < la
-                          ? fmpz_mat_entry(A->lines, i, k)
-                          : fmpz_mat_entry(B->lines, i - la, k));
-    status = wc_cone_set_generators(N, R, L, err);
-    fmpq_mat_clear(R);
-    fmpq_mat_clear(L);
-    if (status != WC_OK)
-        return status;
-    for (i = 0; i < fmpz_mat_nrows(N->ineqs); i++)
-        if (wc_cells_plane_index(cells, N->ineqs->rows[i]) < 0)
-            return WC_OK;
-    for (k = 0; k < 3; k++)
-        fmpq_init(g + k);
-    for (f = 0; f < N->nfaces; f++)
-    {
-        const wc_face_struct * F = N->faces + f;
-
-        for (k = 0; k < 3; k++)
-        {
-            fmpq_zero(g + k);
-            for (j = 0; j < F->nrays; j++)
-                fmpq_add_fmpz(g + k, g + k,
-                              fmpz_mat_entry(N->rays, F->rays[j], k));
-        }
-        N->faces[f].included = wc_cone_contains(A, g) || wc_cone_contains(B, g);
-    }
-    *ok = 1;
-    /* an up-set: no excluded face above an included one */
-    for (f = 0; f < N->nfaces && *ok; f++)
-    {
-        slong h;
-
-        if (!N->faces[f].included)
-            continue;
-        for (h = 0; h < N->nfaces && *ok; h++)
-        {
-            const wc_face_struct * F = N->faces + f, * G = N->faces + h;
-            slong a = 0, b = 0;
-
-            if (G->included || G->dim <= F->dim)
-                continue;
-            while (a < F->nrays && b < G->nrays)
-            {
-                if (F->rays[a] == G->rays[b])
-                    a++;
-                b++;
-            }
-            if (a == F->nrays)
-                *ok = 0;
-        }
-    }
-    for (i = 0; i < cells->count && *ok; i++)
-    {
-        for (k = 0; k < 3; k++)
-            fmpq_set_fmpz(g + k, fmpz_mat_entry(cells->point, i, k));
-        *ok = wc_cone_contains(N, g)
-            == (wc_cone_contains(A, g) || wc_cone_contains(B, g));
-    }
-    for (k = 0; k < 3; k++)
-        fmpq_clear(g + k);
-    return WC_OK;
-}
-
-int
-wc_set_merge(wc_set_t S, const wc_cells_t cells, wc_error_t err)
-{
-    int changed = 1, ok, status = WC_OK;
-    slong i, j;
-    wc_cone_t N;
-
-    wc_cone_init(N, 3);
-    while (changed && status == WC_OK)
-    {
-        changed = 0;
-        for (i = 0; i < S->npieces && status == WC_OK; i++)
-            for (j = i + 1; j < S->npieces && status == WC_OK; j++)
-            {
-                status = try_merge(N, S->pieces + i, S->pieces + j, cells,
-                                   &ok, err);
-                if (status != WC_OK || !ok)
-                    continue;
-                wc_cone_swap(S->pieces + i, N);
-                wc_cone_clear(S->pieces + j);
-                memmove(S->pieces + j, S->pieces + j + 1,
-                        sizeof(wc_cone_struct) * (S->npieces - j - 1));
-                S->npieces--;
-                changed = 1;
-                j = i;      /* piece i grew: try it against all again */
-            }
-    }
-    wc_cone_clear(N);
-    if (status == WC_OK)
-        wc_set_sort(S);
-    return status;
 }

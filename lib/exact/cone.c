@@ -21,12 +21,11 @@
 
 #include <flint/fmpz_vec.h>
 
-#include "wrenchcone.h"
+#include "core/error.h"
+#include "exact/vec3.h"
+#include "exact/cone.h"
 #include "exact/cddbridge.h"
 #include "exact/hull3.h"
-
-/* Row i of an fmpz_mat (FLINT 2.9 has no fmpz_mat_row).  */
-#define WC_ROW(A, i) ((A)->rows[i])
 
 /* ---------------------------------------------------------------------
    Small helpers on rows.  */

@@ -18,21 +18,8 @@
 
 #include <flint/fmpz_vec.h>
 
-#include "wrenchcone.h"
+#include "exact/vec3.h"
 #include "exact/hull3.h"
-
-#define ROW(A, i) ((A)->rows[i])
-
-static void
-cross(fmpz * c, const fmpz * a, const fmpz * b)
-{
-    fmpz_mul(c + 0, a + 1, b + 2);
-    fmpz_submul(c + 0, a + 2, b + 1);
-    fmpz_mul(c + 1, a + 2, b + 0);
-    fmpz_submul(c + 1, a + 0, b + 2);
-    fmpz_mul(c + 2, a + 0, b + 1);
-    fmpz_submul(c + 2, a + 1, b + 0);
-}
 
 /* Append the rows of A (scaled to primitive integers) to G from row *k
    on, each followed by its negative when both is set; zero rows and
@@ -50,7 +37,7 @@ add_rows(fmpz_mat_t G, slong * k, const fmpq_mat_t A, int both)
     fmpz_init(c);
     for (i = 0; i < fmpq_mat_nrows(A); i++)
     {
-        fmpz * v = ROW(G, *k);
+        fmpz * v = WC_ROW(G, *k);
 
         fmpz_one(den);
         for (j = 0; j < 3; j++)
@@ -65,14 +52,14 @@ add_rows(fmpz_mat_t G, slong * k, const fmpq_mat_t A, int both)
             continue;
         _fmpz_vec_scalar_divexact_fmpz(v, v, 3, c);
         for (j = 0; j < *k; j++)
-            if (_fmpz_vec_equal(ROW(G, j), v, 3))
+            if (_fmpz_vec_equal(WC_ROW(G, j), v, 3))
                 break;
         if (j < *k)
             continue;
         (*k)++;
         if (both)
         {
-            _fmpz_vec_neg(ROW(G, *k), v, 3);
+            _fmpz_vec_neg(WC_ROW(G, *k), v, 3);
             (*k)++;
         }
     }
@@ -91,7 +78,7 @@ valid(const fmpz * h, const fmpz_mat_t G, slong k, fmpz_t s, slong * last)
 
     for (r = 0, i = *last; r < k; r++, i = (i + 1 == k ? 0 : i + 1))
     {
-        _fmpz_vec_dot(s, h, ROW(G, i), 3);
+        _fmpz_vec_dot(s, h, WC_ROW(G, i), 3);
         if (fmpz_sgn(s) > 0)
         {
             *last = i;
@@ -137,7 +124,7 @@ hull(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
     fmpz_init(t);
     fmpz_mat_init(Gk, k, 3);
     for (i = 0; i < k; i++)
-        _fmpz_vec_set(ROW(Gk, i), ROW(G, i), 3);
+        _fmpz_vec_set(WC_ROW(Gk, i), WC_ROW(G, i), 3);
     fmpz_mat_init(N, 3, 3);
     r = k == 0 ? 0 : 3 - fmpz_mat_nullspace(N, Gk);
     if (k == 0)
@@ -154,12 +141,12 @@ hull(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
             fmpz_mat_t big; \
             fmpz_mat_init(big, 2 * alloc, 3); \
             for (s = 0; s < nf; s++) \
-                _fmpz_vec_set(ROW(big, s), ROW(out, s), 3); \
+                _fmpz_vec_set(WC_ROW(big, s), WC_ROW(out, s), 3); \
             fmpz_mat_swap(big, out); \
             fmpz_mat_clear(big); \
             alloc *= 2; \
         } \
-        _fmpz_vec_set(ROW(out, nf), (v), 3); \
+        _fmpz_vec_set(WC_ROW(out, nf), (v), 3); \
         nf++; \
     } while (0)
 
@@ -183,15 +170,15 @@ hull(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
                    (j is a dummy).  */
                 for (q = 0; q < on[i].len && !known; q++)
                 {
-                    _fmpz_vec_dot(t, ROW(out, on[i].f[q]), ROW(G, j), 3);
+                    _fmpz_vec_dot(t, WC_ROW(out, on[i].f[q]), WC_ROW(G, j), 3);
                     known = r == 2 || fmpz_is_zero(t);
                 }
                 if (known)
                     continue;
                 if (r == 3)
-                    cross(h, ROW(G, i), ROW(G, j));
+                    _wc_zvec3_cross(h, WC_ROW(G, i), WC_ROW(G, j));
                 else
-                    cross(h, e, ROW(G, i));
+                    _wc_zvec3_cross(h, e, WC_ROW(G, i));
                 if (_fmpz_vec_is_zero(h, 3))
                     continue;
                 for (sign = 0; sign < 2; sign++, _fmpz_vec_neg(h, h, 3))
@@ -201,7 +188,7 @@ hull(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
                     PUSH(h);
                     for (q = 0; q < k; q++)
                     {
-                        _fmpz_vec_dot(t, h, ROW(G, q), 3);
+                        _fmpz_vec_dot(t, h, WC_ROW(G, q), 3);
                         if (fmpz_is_zero(t))
                             facet_list_push(on + q, nf - 1);
                     }
@@ -215,7 +202,7 @@ hull(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
     }
     else if (r == 1)
     {
-        _fmpz_vec_neg(h, ROW(G, 0), 3);
+        _fmpz_vec_neg(h, WC_ROW(G, 0), 3);
         if (valid(h, G, k, t, &last))
             PUSH(h);
         _fmpz_vec_neg(h, h, 3);
@@ -294,11 +281,11 @@ _wc_hull3_h_to_v(fmpq_mat_t rays, fmpq_mat_t lines, const fmpq_mat_t E,
 
         fmpz_init(t);
         for (i = 2; i < k && _fmpz_vec_is_zero(u, 3); i += 2)
-            cross(u, ROW(G, 0), ROW(G, i));
+            _wc_zvec3_cross(u, WC_ROW(G, 0), WC_ROW(G, i));
         add_rows(G, &k, H, 0);
         for (i = 0; i < k; i++)
         {
-            _fmpz_vec_dot(t, ROW(G, i), u, 3);
+            _fmpz_vec_dot(t, WC_ROW(G, i), u, 3);
             pos |= fmpz_sgn(t) > 0;
             neg |= fmpz_sgn(t) < 0;
         }

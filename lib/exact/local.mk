@@ -3,15 +3,26 @@
 
 lib_libwc_la_SOURCES += \
 	lib/exact/vec3.c \
+	lib/exact/hash.c \
+	lib/exact/zvec3set.c \
 	lib/exact/cone.c \
 	lib/exact/cddbridge.c \
 	lib/exact/hull3.c \
-	lib/exact/cells.c
+	lib/exact/arrangement.c \
+	lib/exact/cells.c \
+	lib/exact/incidence.c \
+	lib/exact/box.c \
+	lib/exact/set.c
 wcexactdir = $(pkgincludedir)/exact
 wcexact_HEADERS = \
 	lib/exact/cone.h \
 	lib/exact/cells.h
 noinst_HEADERS += \
 	lib/exact/vec3.h \
+	lib/exact/hash.h \
+	lib/exact/zvec3set.h \
 	lib/exact/cddbridge.h \
-	lib/exact/hull3.h
+	lib/exact/hull3.h \
+	lib/exact/arrangement.h \
+	lib/exact/incidence.h \
+	lib/exact/box.h
