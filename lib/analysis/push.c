@@ -484,6 +484,178 @@ add_full_circle(ivlist * L)
     I->from_closed = I->to_closed = 1;
 }
 
+/* The breakpoints of the disk's boundary: for each plane, the two
+   directions u where h . w(u) changes sign, primitive, sorted by angle,
+   without repeats.  bp holds 2 nrows entries; returns how many are set.
+   r is the centre minus the centre of mass; a and t are scratch.  */
+static slong
+disk_breakpoints(dir * bp, const fmpz_mat_t planes, const fmpq * r,
+                 fmpq * a, fmpq_t t)
+{
+    slong nrows = fmpz_mat_nrows(planes), i, j, nb;
+
+    /* Breakpoints: for each plane, a = -(h_x - h_t r_y, h_y + h_t r_x);
+       h . w(u) = a . u vanishes at +-(-a_y, a_x).  */
+    nb = 0;
+    for (i = 0; i < nrows; i++)
+    {
+        const fmpz * h = WC_ROW(planes, i);
+
+        fmpq_mul_fmpz(t, r + 1, h + 2);
+        fmpq_sub_fmpz(a + 0, t, h + 0);         /* h_t r_y - h_x */
+        fmpq_mul_fmpz(t, r + 0, h + 2);
+        fmpq_add_fmpz(t, t, h + 1);
+        fmpq_neg(a + 1, t);                     /* -(h_y + h_t r_x) */
+        if (fmpq_is_zero(a + 0) && fmpq_is_zero(a + 1))
+            continue;
+        fmpq_neg(t, a + 1);
+        dir_set_primitive(bp + nb, t, a + 0);   /* (-a_y, a_x) */
+        fmpz_neg(&bp[nb + 1].x, &bp[nb].x);
+        fmpz_neg(&bp[nb + 1].y, &bp[nb].y);
+        nb += 2;
+    }
+    qsort(bp, nb, sizeof(dir), dir_cmp_qsort);
+    if (nb > 0)
+    {
+        for (i = 1, j = 1; i < nb; i++)
+            if (!fmpz_equal(&bp[i].x, &bp[j - 1].x)
+                || !fmpz_equal(&bp[i].y, &bp[j - 1].y))
+            {
+                fmpz_swap(&bp[j].x, &bp[i].x);
+                fmpz_swap(&bp[j].y, &bp[i].y);
+                j++;
+            }
+        nb = j;
+    }
+    return nb;
+}
+
+/* atom[i] for the 2 nb atoms round the circle (see disk_regions): 1 in,
+   0 out; returns WC_EINTERNAL when the membership test fails.  */
+static int
+disk_atoms(int * atom, const dir * bp, slong nb, const fmpq * r,
+           wc_member_fn in, void * ctx)
+{
+    slong i, natoms = 2 * nb;
+    fmpq g[3];
+    fmpz_t sx, sy;
+    int status = WC_OK;
+
+    for (i = 0; i < 3; i++)
+        fmpq_init(g + i);
+    fmpz_init(sx);
+    fmpz_init(sy);
+    for (i = 0; i < natoms && status == WC_OK; i++)
+    {
+        const dir * u = bp + i / 2, * v = bp + (i / 2 + 1) % nb;
+
+        if (i % 2 == 0)
+        {
+            fmpz_set(sx, &u->x);
+            fmpz_set(sy, &u->y);
+        }
+        else
+        {
+            int cr = dir_cross_sgn(u, v);
+
+            if (cr == 0 && nb > 1)
+            {
+                /* v = -u: the half circle to the left of u.  */
+                fmpz_neg(sx, &u->y);
+                fmpz_set(sy, &u->x);
+            }
+            else
+            {
+                fmpz_add(sx, &u->x, &v->x);
+                fmpz_add(sy, &u->y, &v->y);
+                if (cr <= 0)
+                {
+                    fmpz_neg(sx, sx);
+                    fmpz_neg(sy, sy);
+                }
+            }
+        }
+        disk_wrench(g, sx, sy, r);
+        atom[i] = ask(in, ctx, g);
+        if (atom[i] < 0)
+            status = WC_EINTERNAL;
+    }
+    for (i = 0; i < 3; i++)
+        fmpq_clear(g + i);
+    fmpz_clear(sx);
+    fmpz_clear(sy);
+    return status;
+}
+
+/* Append to L the maximal cyclic runs of atoms that are in, walking once
+   round from just after atom first_out, which is out.  */
+static void
+disk_runs(ivlist * L, const int * atom, slong first_out, const dir * bp,
+          slong nb)
+{
+    slong natoms = 2 * nb, i, j;
+
+    /* Maximal cyclic runs, walking once round from just after an "out"
+       atom, so that no run is cut at the wrap-around.  A run from atom i
+       to atom j starts at breakpoint i / 2 (closed when i is a
+       breakpoint, open when it is the arc after it) and ends at
+       breakpoint j / 2 (closed) or the one after it (open).  A run of
+       every atom but breakpoint k is the circle minus k: from k to k,
+       both open, as push.h asks.  */
+    for (i = 1; i <= natoms; )
+    {
+        slong ai = (first_out + i) % natoms, start, end;
+        wc_push_interval_struct * I;
+
+        if (!atom[ai])
+        {
+            i++;
+            continue;
+        }
+        start = ai;
+        while (i + 1 <= natoms && atom[(first_out + i + 1) % natoms])
+            i++;
+        end = (first_out + i) % natoms;
+        I = ivlist_add(L);
+        I->edge = -1;
+        fmpz_set(I->dfrom + 0, &bp[start / 2].x);
+        fmpz_set(I->dfrom + 1, &bp[start / 2].y);
+        I->from_closed = (start % 2 == 0);
+        j = (end % 2 == 0) ? end / 2 : (end / 2 + 1) % nb;
+        fmpz_set(I->dto + 0, &bp[j].x);
+        fmpz_set(I->dto + 1, &bp[j].y);
+        I->to_closed = (end % 2 == 0);
+        i++;
+    }
+}
+
+/* Sort L's intervals by the angle of their from direction.  */
+static void
+sort_by_from(ivlist * L)
+{
+    slong i, j;
+
+    /* Sort by the angle of from (the starts are distinct directions: two
+       maximal runs cannot both begin at one breakpoint).  Insertion sort
+       on swaps of whole structs; the counts are small.  */
+    for (i = 1; i < L->count; i++)
+        for (j = i; j > 0; j--)
+        {
+            dir u, v;
+            wc_push_interval_struct tmp;
+
+            u.x = L->iv[j - 1].dfrom[0];
+            u.y = L->iv[j - 1].dfrom[1];
+            v.x = L->iv[j].dfrom[0];
+            v.y = L->iv[j].dfrom[1];
+            if (dir_cmp(&u, &v) <= 0)
+                break;
+            tmp = L->iv[j - 1];
+            L->iv[j - 1] = L->iv[j];
+            L->iv[j] = tmp;
+        }
+}
+
 static int
 disk_regions(ivlist * L, const wc_problem_t P, const fmpz_mat_t planes,
              wc_member_fn in, void * ctx, wc_error_t err)
@@ -524,39 +696,7 @@ disk_regions(ivlist * L, const wc_problem_t P, const fmpz_mat_t planes,
     fmpq_sub(r + 0, c + 0, P->com + 0);
     fmpq_sub(r + 1, c + 1, P->com + 1);
 
-    /* Breakpoints: for each plane, a = -(h_x - h_t r_y, h_y + h_t r_x);
-       h . w(u) = a . u vanishes at +-(-a_y, a_x).  */
-    nb = 0;
-    for (i = 0; i < nrows; i++)
-    {
-        const fmpz * h = WC_ROW(planes, i);
-
-        fmpq_mul_fmpz(t, r + 1, h + 2);
-        fmpq_sub_fmpz(a + 0, t, h + 0);         /* h_t r_y - h_x */
-        fmpq_mul_fmpz(t, r + 0, h + 2);
-        fmpq_add_fmpz(t, t, h + 1);
-        fmpq_neg(a + 1, t);                     /* -(h_y + h_t r_x) */
-        if (fmpq_is_zero(a + 0) && fmpq_is_zero(a + 1))
-            continue;
-        fmpq_neg(t, a + 1);
-        dir_set_primitive(bp + nb, t, a + 0);   /* (-a_y, a_x) */
-        fmpz_neg(&bp[nb + 1].x, &bp[nb].x);
-        fmpz_neg(&bp[nb + 1].y, &bp[nb].y);
-        nb += 2;
-    }
-    qsort(bp, nb, sizeof(dir), dir_cmp_qsort);
-    if (nb > 0)
-    {
-        for (i = 1, j = 1; i < nb; i++)
-            if (!fmpz_equal(&bp[i].x, &bp[j - 1].x)
-                || !fmpz_equal(&bp[i].y, &bp[j - 1].y))
-            {
-                fmpz_swap(&bp[j].x, &bp[i].x);
-                fmpz_swap(&bp[j].y, &bp[i].y);
-                j++;
-            }
-        nb = j;
-    }
+    nb = disk_breakpoints(bp, planes, r, a, t);
 
     if (nb == 0)
     {
@@ -583,41 +723,7 @@ disk_regions(ivlist * L, const wc_problem_t P, const fmpz_mat_t planes,
        the arc's middle.  */
     natoms = 2 * nb;
     atom = flint_malloc(sizeof(int) * natoms);
-    for (i = 0; i < natoms && status == WC_OK; i++)
-    {
-        const dir * u = bp + i / 2, * v = bp + (i / 2 + 1) % nb;
-
-        if (i % 2 == 0)
-        {
-            fmpz_set(sx, &u->x);
-            fmpz_set(sy, &u->y);
-        }
-        else
-        {
-            int cr = dir_cross_sgn(u, v);
-
-            if (cr == 0 && nb > 1)
-            {
-                /* v = -u: the half circle to the left of u.  */
-                fmpz_neg(sx, &u->y);
-                fmpz_set(sy, &u->x);
-            }
-            else
-            {
-                fmpz_add(sx, &u->x, &v->x);
-                fmpz_add(sy, &u->y, &v->y);
-                if (cr <= 0)
-                {
-                    fmpz_neg(sx, sx);
-                    fmpz_neg(sy, sy);
-                }
-            }
-        }
-        disk_wrench(g, sx, sy, r);
-        atom[i] = ask(in, ctx, g);
-        if (atom[i] < 0)
-            status = WC_EINTERNAL;
-    }
+    status = disk_atoms(atom, bp, nb, r, in, ctx);
     if (status != WC_OK)
         goto cleanup;
 
@@ -637,51 +743,8 @@ disk_regions(ivlist * L, const wc_problem_t P, const fmpz_mat_t planes,
        breakpoint j / 2 (closed) or the one after it (open).  A run of
        every atom but breakpoint k is the circle minus k: from k to k,
        both open, as push.h asks.  */
-    for (i = 1; i <= natoms; )
-    {
-        slong ai = (first_out + i) % natoms, start, end;
-        wc_push_interval_struct * I;
-
-        if (!atom[ai])
-        {
-            i++;
-            continue;
-        }
-        start = ai;
-        while (i + 1 <= natoms && atom[(first_out + i + 1) % natoms])
-            i++;
-        end = (first_out + i) % natoms;
-        I = ivlist_add(L);
-        I->edge = -1;
-        fmpz_set(I->dfrom + 0, &bp[start / 2].x);
-        fmpz_set(I->dfrom + 1, &bp[start / 2].y);
-        I->from_closed = (start % 2 == 0);
-        j = (end % 2 == 0) ? end / 2 : (end / 2 + 1) % nb;
-        fmpz_set(I->dto + 0, &bp[j].x);
-        fmpz_set(I->dto + 1, &bp[j].y);
-        I->to_closed = (end % 2 == 0);
-        i++;
-    }
-
-    /* Sort by the angle of from (the starts are distinct directions: two
-       maximal runs cannot both begin at one breakpoint).  Insertion sort
-       on swaps of whole structs; the counts are small.  */
-    for (i = 1; i < L->count; i++)
-        for (j = i; j > 0; j--)
-        {
-            dir u, v;
-            wc_push_interval_struct tmp;
-
-            u.x = L->iv[j - 1].dfrom[0];
-            u.y = L->iv[j - 1].dfrom[1];
-            v.x = L->iv[j].dfrom[0];
-            v.y = L->iv[j].dfrom[1];
-            if (dir_cmp(&u, &v) <= 0)
-                break;
-            tmp = L->iv[j - 1];
-            L->iv[j - 1] = L->iv[j];
-            L->iv[j] = tmp;
-        }
+    disk_runs(L, atom, first_out, bp, nb);
+    sort_by_from(L);
 
 cleanup:
     flint_free(atom);
