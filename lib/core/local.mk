@@ -11,6 +11,7 @@ wccoredir = $(pkgincludedir)/core
 wccore_HEADERS = \
 	lib/core/error.h \
 	lib/core/problem.h \
-	lib/core/random.h
+	lib/core/random.h \
+	lib/core/version.h
 noinst_HEADERS += \
 	lib/core/json.h

@@ -9,7 +9,7 @@
 #include <gmp.h>
 #include <flint/flint.h>
 
-#include "wrenchcone.h"
+#include "core/version.h"
 
 const char *
 wc_version(void)
