@@ -19,9 +19,7 @@
 #include <string.h>
 
 #include "core/json.h"
-
-/* Quoted text in messages is cut after this many bytes.  */
-#define WC_JSON_SHOW_MAX 64
+#include "core/text.h"
 
 /* ------------------------------------------------------------------ */
 /* The arena.                                                          */
@@ -196,46 +194,6 @@ _wc_json_type_name(wc_json_type t)
     return "a value";
 }
 
-char *
-_wc_json_show(const char * s, size_t len)
-{
-    static const char hex[] = "0123456789abcdef";
-    size_t n = len, i, j = 0;
-    char * d;
-
-    if (n > WC_JSON_SHOW_MAX)
-    {
-        n = WC_JSON_SHOW_MAX;
-        /* do not cut a UTF-8 sequence */
-        while (n > 0 && ((unsigned char) s[n] & 0xc0) == 0x80)
-            n--;
-    }
-    d = malloc(4 * n + 4);
-    if (d == NULL)
-        return NULL;
-    for (i = 0; i < n; i++)
-    {
-        unsigned char c = (unsigned char) s[i];
-
-        if (c < 0x20 || c == 0x7f)
-        {
-            d[j++] = '\\';
-            d[j++] = 'x';
-            d[j++] = hex[c >> 4];
-            d[j++] = hex[c & 15];
-        }
-        else
-            d[j++] = (char) c;
-    }
-    if (n < len)
-    {
-        memcpy(d + j, "...", 3);
-        j += 3;
-    }
-    d[j] = '\0';
-    return d;
-}
-
 /* ------------------------------------------------------------------ */
 /* The reader.                                                         */
 
@@ -295,7 +253,7 @@ nomem(reader * r)
 static int
 fail_quoting(reader * r, size_t off, const char * fmt, size_t a, size_t b)
 {
-    char * t = _wc_json_show(r->s + a, b - a);
+    char * t = _wc_show(r->s + a, b - a, 1);
     int status;
 
     if (t == NULL)
@@ -852,7 +810,7 @@ check_duplicates(reader * r, const wc_json_node * v, size_t m, int status)
     if (status != WC_OK && (r->eline < key->line
                             || (r->eline == key->line && r->ecol < key->col)))
         return status;
-    t = _wc_json_show(key->text, key->len);
+    t = _wc_show(key->text, key->len, 1);
     if (t == NULL)
         return nomem(r);
     status = fail_at(r, key->line, key->col, "duplicate key '%s'", t);

@@ -3,7 +3,12 @@
 
 lib_libwc_la_SOURCES += \
 	lib/core/error.c \
+	lib/core/text.c \
 	lib/core/problem.c \
+	lib/core/number.c \
+	lib/core/polygon.c \
+	lib/core/lexer.c \
+	lib/core/parse.c \
 	lib/core/random.c \
 	lib/core/json.c \
 	lib/core/version.c
@@ -14,4 +19,7 @@ wccore_HEADERS = \
 	lib/core/random.h \
 	lib/core/version.h
 noinst_HEADERS += \
-	lib/core/json.h
+	lib/core/json.h \
+	lib/core/text.h \
+	lib/core/polygon.h \
+	lib/core/lexer.h
