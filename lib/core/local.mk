@@ -9,6 +9,10 @@ lib_libwc_la_SOURCES += \
 	lib/core/polygon.c \
 	lib/core/lexer.c \
 	lib/core/parse.c \
+	lib/core/rng.c \
+	lib/core/qvec2.c \
+	lib/core/randshape.c \
+	lib/core/randdegen.c \
 	lib/core/random.c \
 	lib/core/json.c \
 	lib/core/version.c
@@ -22,4 +26,5 @@ noinst_HEADERS += \
 	lib/core/json.h \
 	lib/core/text.h \
 	lib/core/polygon.h \
-	lib/core/lexer.h
+	lib/core/lexer.h \
+	lib/core/randgen.h
