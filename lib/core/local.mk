@@ -15,6 +15,7 @@ lib_libwc_la_SOURCES += \
 	lib/core/randdegen.c \
 	lib/core/random.c \
 	lib/core/json.c \
+	lib/core/jsontree.c \
 	lib/core/version.c
 wccoredir = $(pkgincludedir)/core
 wccore_HEADERS = \
