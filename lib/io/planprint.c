@@ -13,20 +13,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "wrenchcone.h"
 #include "analysis/plan.h"
-
-static int
-done(FILE * out)
-{
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
-}
-
-static const char *
-tf(int b)
-{
-    return b ? "true" : "false";
-}
+#include "io/print.h"
+#include "io/printutil.h"
 
 /* The strings with the given indices: a JSON array or a spaced list.  */
 static void
@@ -169,14 +158,14 @@ wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
                         T->strings[T->contained_in[i]]);
         fputs("], \"goal\": ", out);
         wc_set_fprint_json(out, R->goal);
-        fprintf(out, ", \"goal_in_strong\": %s", tf(R->goal_in_strong));
+        fprintf(out, ", \"goal_in_strong\": %s", _wc_tf(R->goal_in_strong));
         if (!R->goal_in_strong)
         {
             fputs(", \"goal_not_strong\": ", out);
             wc_fprint_qvec(out, R->strong_witness, 3, 1);
         }
         fprintf(out, ", \"goal_in_strong_paper\": %s",
-                tf(R->goal_in_strong_paper));
+                _wc_tf(R->goal_in_strong_paper));
         if (!R->goal_in_strong_paper)
         {
             fputs(", \"goal_not_strong_paper\": ", out);
@@ -206,7 +195,7 @@ wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
         }
         fputs("}\n", out);
         flint_free(ex);
-        return done(out);
+        return _wc_fprint_done(out);
     }
 
     fprintf(out, "insertion plan for %ld fixel%s (a state marks each "
@@ -292,7 +281,7 @@ wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
         }
     }
     flint_free(ex);
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 static const char *
@@ -320,13 +309,13 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
     {
         fputs("{\"wrench\": ", out);
         wc_fprint_qvec(out, W->g, 3, 1);
-        fprintf(out, ", \"in_goal\": %s, \"holding\": ", tf(W->in_goal));
+        fprintf(out, ", \"in_goal\": %s, \"holding\": ", _wc_tf(W->in_goal));
         strlist(out, W->holding, NULL, W->nholding, 1);
         if (W->complete)
         {
             fprintf(out, ", \"complete\": {\"accepted\": %s, \"verdict\": "
                     "\"%s\", \"transitions\": [",
-                    tf(W->verdict == WC_PLAN_ACCEPTED),
+                    _wc_tf(W->verdict == WC_PLAN_ACCEPTED),
                     verdict_name(W->verdict));
             for (i = 0; i < W->nedges; i++)
             {
@@ -346,7 +335,7 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
             fputs("]}", out);
         }
         fputs("}\n", out);
-        return done(out);
+        return _wc_fprint_done(out);
     }
     fputs("wrench g = ", out);
     wc_fprint_qvec(out, W->g, 3, 0);
@@ -358,7 +347,7 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
         putc('\n', out);
     }
     if (!W->complete)
-        return done(out);
+        return _wc_fprint_done(out);
     fprintf(out, "  complete plan: %s", W->verdict == WC_PLAN_ACCEPTED
             ? "accepted: every run reaches the goal and stays\n"
             : "rejected: ");
@@ -396,7 +385,7 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
         fprintf(out, "  %s%s\n", W->via[i], W->from[i] == W->to[i]
                 ? "  (stays)" : "");
     }
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 int
@@ -418,7 +407,7 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
         fputs(", \"goal\": ", out);
         wc_set_fprint_json(out, G);
         fprintf(out, ", \"goal_in_strong\": %s, \"goal_in_strong_paper\": %s",
-                tf(R->goal_in_strong), tf(R->goal_in_strong_paper));
+                _wc_tf(R->goal_in_strong), _wc_tf(R->goal_in_strong_paper));
         if (R->has_push)
         {
             fputs(", \"push\": {\"goal\": ", out);
@@ -428,7 +417,7 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
         }
         putc('}', out);
         flint_free(ex);
-        return done(out);
+        return _wc_fprint_done(out);
     }
     fputs("mu = ", out);
     wc_fprint_fmpq(out, mu);
@@ -490,5 +479,5 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
                 total > 0 ? 100 * len / total : 0.0);
     }
     flint_free(ex);
-    return done(out);
+    return _wc_fprint_done(out);
 }
