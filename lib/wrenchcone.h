@@ -28,26 +28,6 @@
 #include "analysis/push.h"
 #include "analysis/stability.h"
 #include "analysis/plan.h"
-
-#ifdef __cplusplus
-extern "C" {
-#endif
-
-/* Optional one-time set-up of the exact backends (cddlib's global
-   constants).  Every library function that needs it calls it; it is
-   idempotent, so callers that use cddlib themselves call this instead of
-   dd_set_global_constants().  */
-void wc_init(void);
-
-/* Version strings: ours, and those of the GMP, FLINT and cddlib we run
-   with.  Static storage; never NULL.  */
-const char * wc_version(void);
-const char * wc_gmp_version(void);
-const char * wc_flint_version(void);
-const char * wc_cdd_version(void);
-
-#ifdef __cplusplus
-}
-#endif
+#include "core/version.h"
 
 #endif

@@ -9,7 +9,11 @@ lib_libwc_la_SOURCES += \
 	lib/analysis/kinematics.c \
 	lib/analysis/push.c \
 	lib/analysis/stability.c \
-	lib/analysis/plan.c
+	lib/analysis/planstr.c \
+	lib/analysis/plancones.c \
+	lib/analysis/plangraph.c \
+	lib/analysis/plan.c \
+	lib/analysis/plansweep.c
 wcanalysisdir = $(pkgincludedir)/analysis
 wcanalysis_HEADERS = \
 	lib/analysis/wrench.h \
@@ -17,3 +21,5 @@ wcanalysis_HEADERS = \
 	lib/analysis/push.h \
 	lib/analysis/stability.h \
 	lib/analysis/plan.h
+noinst_HEADERS += \
+	lib/analysis/planparts.h

@@ -19,9 +19,7 @@
 #include <string.h>
 
 #include "core/json.h"
-
-/* Quoted text in messages is cut after this many bytes.  */
-#define WC_JSON_SHOW_MAX 64
+#include "core/text.h"
 
 /* ------------------------------------------------------------------ */
 /* The arena.                                                          */
@@ -131,111 +129,6 @@ _wc_json_clear(wc_json_t J)
     J->arena = NULL;
 }
 
-const wc_json_node *
-_wc_json_array_get(const wc_json_node * a, size_t i)
-{
-    if (a == NULL || a->type != WC_JSON_ARRAY || i >= a->len)
-        return NULL;
-    return a->items + i;
-}
-
-const wc_json_node *
-_wc_json_object_key(const wc_json_node * o, size_t i)
-{
-    if (o == NULL || o->type != WC_JSON_OBJECT || i >= o->len)
-        return NULL;
-    return o->items + 2 * i;
-}
-
-const wc_json_node *
-_wc_json_object_value(const wc_json_node * o, size_t i)
-{
-    if (o == NULL || o->type != WC_JSON_OBJECT || i >= o->len)
-        return NULL;
-    return o->items + 2 * i + 1;
-}
-
-const wc_json_node *
-_wc_json_object_get(const wc_json_node * o, const char * key)
-{
-    size_t n, i;
-
-    if (o == NULL || o->type != WC_JSON_OBJECT)
-        return NULL;
-    n = strlen(key);
-    for (i = 0; i < o->len; i++)
-    {
-        const wc_json_node * k = o->items + 2 * i;
-
-        if (k->len == n && memcmp(k->text, key, n) == 0)
-            return o->items + 2 * i + 1;
-    }
-    return NULL;
-}
-
-const char *
-_wc_json_type_name(wc_json_type t)
-{
-    switch (t)
-    {
-    case WC_JSON_NULL:
-        return "null";
-    case WC_JSON_FALSE:
-        return "false";
-    case WC_JSON_TRUE:
-        return "true";
-    case WC_JSON_NUMBER:
-        return "a number";
-    case WC_JSON_STRING:
-        return "a string";
-    case WC_JSON_ARRAY:
-        return "an array";
-    case WC_JSON_OBJECT:
-        return "an object";
-    }
-    return "a value";
-}
-
-char *
-_wc_json_show(const char * s, size_t len)
-{
-    static const char hex[] = "0123456789abcdef";
-    size_t n = len, i, j = 0;
-    char * d;
-
-    if (n > WC_JSON_SHOW_MAX)
-    {
-        n = WC_JSON_SHOW_MAX;
-        /* do not cut a UTF-8 sequence */
-        while (n > 0 && ((unsigned char) s[n] & 0xc0) == 0x80)
-            n--;
-    }
-    d = malloc(4 * n + 4);
-    if (d == NULL)
-        return NULL;
-    for (i = 0; i < n; i++)
-    {
-        unsigned char c = (unsigned char) s[i];
-
-        if (c < 0x20 || c == 0x7f)
-        {
-            d[j++] = '\\';
-            d[j++] = 'x';
-            d[j++] = hex[c >> 4];
-            d[j++] = hex[c & 15];
-        }
-        else
-            d[j++] = (char) c;
-    }
-    if (n < len)
-    {
-        memcpy(d + j, "...", 3);
-        j += 3;
-    }
-    d[j] = '\0';
-    return d;
-}
-
 /* ------------------------------------------------------------------ */
 /* The reader.                                                         */
 
@@ -295,7 +188,7 @@ nomem(reader * r)
 static int
 fail_quoting(reader * r, size_t off, const char * fmt, size_t a, size_t b)
 {
-    char * t = _wc_json_show(r->s + a, b - a);
+    char * t = _wc_show(r->s + a, b - a, 1);
     int status;
 
     if (t == NULL)
@@ -852,7 +745,7 @@ check_duplicates(reader * r, const wc_json_node * v, size_t m, int status)
     if (status != WC_OK && (r->eline < key->line
                             || (r->eline == key->line && r->ecol < key->col)))
         return status;
-    t = _wc_json_show(key->text, key->len);
+    t = _wc_show(key->text, key->len, 1);
     if (t == NULL)
         return nomem(r);
     status = fail_at(r, key->line, key->col, "duplicate key '%s'", t);

@@ -22,6 +22,7 @@
 #include <stddef.h>
 
 #include "core/error.h"
+#include "core/text.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -102,10 +103,9 @@ const wc_json_node * _wc_json_object_value(const wc_json_node * o,
    "a number", "a string", "an array", "an object".  */
 const char * _wc_json_type_name(wc_json_type t);
 
-/* A printable copy of s[0..len) for a message: control bytes (and DEL)
-   as \xNN, cut after 64 bytes (at a UTF-8 character boundary) with "...".
-   malloc'd, caller frees; NULL when out of memory.  */
-char * _wc_json_show(const char * s, size_t len);
+/* The name callers outside core know _wc_show(s, len, 1) by: a printable
+   copy of s[0..len) for a message, cut at a UTF-8 character boundary.  */
+#define _wc_json_show(s, len) _wc_show((s), (len), 1)
 
 #ifdef __cplusplus
 }

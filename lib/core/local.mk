@@ -3,14 +3,29 @@
 
 lib_libwc_la_SOURCES += \
 	lib/core/error.c \
+	lib/core/text.c \
 	lib/core/problem.c \
+	lib/core/number.c \
+	lib/core/polygon.c \
+	lib/core/lexer.c \
+	lib/core/parse.c \
+	lib/core/rng.c \
+	lib/core/qvec2.c \
+	lib/core/randshape.c \
+	lib/core/randdegen.c \
 	lib/core/random.c \
 	lib/core/json.c \
+	lib/core/jsontree.c \
 	lib/core/version.c
 wccoredir = $(pkgincludedir)/core
 wccore_HEADERS = \
 	lib/core/error.h \
 	lib/core/problem.h \
-	lib/core/random.h
+	lib/core/random.h \
+	lib/core/version.h
 noinst_HEADERS += \
-	lib/core/json.h
+	lib/core/json.h \
+	lib/core/text.h \
+	lib/core/polygon.h \
+	lib/core/lexer.h \
+	lib/core/randgen.h

@@ -14,7 +14,6 @@
 #include <config.h>
 
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -26,29 +25,6 @@
 
 #include "wrenchcone.h"
 #include "exact/cddbridge.h"
-
-static pthread_once_t cdd_once = PTHREAD_ONCE_INIT;
-
-static void
-cdd_init_once(void)
-{
-    dd_set_global_constants();
-    /* The double build's constants are separate globals (ddf_zero is its
-       tolerance, 1e-7); floatcone.c needs them.  */
-    ddf_set_global_constants();
-}
-
-void
-wc_init(void)
-{
-    pthread_once(&cdd_once, cdd_init_once);
-}
-
-const char *
-wc_cdd_version(void)
-{
-    return dd_DDVERSION " (" dd_ARITHMETIC ")";
-}
 
 static slong
 rows_of(const fmpq_mat_t A)

@@ -13,20 +13,9 @@
 #include <math.h>
 #include <string.h>
 
-#include "wrenchcone.h"
 #include "analysis/plan.h"
-
-static int
-done(FILE * out)
-{
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
-}
-
-static const char *
-tf(int b)
-{
-    return b ? "true" : "false";
-}
+#include "io/print.h"
+#include "io/printutil.h"
 
 /* The strings with the given indices: a JSON array or a spaced list.  */
 static void
@@ -135,79 +124,84 @@ text_witness(FILE * out, const char * what, const fmpq * g)
     wc_fprint_qvec(out, g, 3, 0);
 }
 
-int
-wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
-               int json)
+/* The plan as JSON; ex lists the exactly needed strings.  */
+static void
+plan_json(FILE * out, const wc_plan_t R, const slong * ex)
 {
     const wc_plan_strings_struct * T = R->T;
-    slong n = T->n, i, k, * ex = exact_list(R);
+    slong n = T->n, i, k;
     ulong S, full = (UWORD(1) << n) - 1;
 
-    if (json)
+    fprintf(out, "{\"fixels\": %ld, \"states\": [", (long) n);
+    for (S = 0; S <= full; S++)
     {
-        fprintf(out, "{\"fixels\": %ld, \"states\": [", (long) n);
-        for (S = 0; S <= full; S++)
-        {
-            fputs(S ? ", {\"state\": " : "{\"state\": ", out);
-            state(out, S, n, 1);
-            fputs(", \"strings\": ", out);
-            strlist(out, T->strings, T->state_str + T->state_first[S],
-                    T->state_first[S + 1] - T->state_first[S], 1);
-            putc('}', out);
-        }
-        fputs("], \"strings\": ", out);
-        strlist(out, T->strings, NULL, T->nstrings, 1);
-        fputs(", \"needed\": ", out);
-        strlist(out, T->strings, T->needed, T->nneeded, 1);
-        fputs(", \"needed_exact\": ", out);
-        strlist(out, T->strings, ex, R->nexact, 1);
-        fputs(", \"redundant\": [", out);
-        for (i = 0, k = 0; i < T->nstrings; i++)
-            if (T->contained_in[i] >= 0)
-                fprintf(out, "%s{\"string\": \"%s\", \"in\": \"%s\"}",
-                        k++ ? ", " : "", T->strings[i],
-                        T->strings[T->contained_in[i]]);
-        fputs("], \"goal\": ", out);
-        wc_set_fprint_json(out, R->goal);
-        fprintf(out, ", \"goal_in_strong\": %s", tf(R->goal_in_strong));
-        if (!R->goal_in_strong)
-        {
-            fputs(", \"goal_not_strong\": ", out);
-            wc_fprint_qvec(out, R->strong_witness, 3, 1);
-        }
-        fprintf(out, ", \"goal_in_strong_paper\": %s",
-                tf(R->goal_in_strong_paper));
-        if (!R->goal_in_strong_paper)
-        {
-            fputs(", \"goal_not_strong_paper\": ", out);
-            wc_fprint_qvec(out, R->paper_witness, 3, 1);
-        }
-        if (R->has_push)
-        {
-            fputs(", \"push\": {\"goal\": ", out);
-            wc_push_fprint(out, R->push_goal, 1, "");
-            putc('}', out);
-        }
-        if (R->complete)
-        {
-            fputs(", \"complete\": {\"accepted\": ", out);
-            wc_set_fprint_json(out, R->accepted);
-            fputs(", \"outside_goal\": ", out);
-            if (R->has_extra)
-                wc_fprint_qvec(out, R->extra, 3, 1);
-            else
-                fputs("null", out);
-            if (R->has_push_accepted)
-            {
-                fputs(", \"push\": ", out);
-                wc_push_fprint(out, R->push_accepted, 1, "");
-            }
-            putc('}', out);
-        }
-        fputs("}\n", out);
-        flint_free(ex);
-        return done(out);
+        fputs(S ? ", {\"state\": " : "{\"state\": ", out);
+        state(out, S, n, 1);
+        fputs(", \"strings\": ", out);
+        strlist(out, T->strings, T->state_str + T->state_first[S],
+                T->state_first[S + 1] - T->state_first[S], 1);
+        putc('}', out);
     }
+    fputs("], \"strings\": ", out);
+    strlist(out, T->strings, NULL, T->nstrings, 1);
+    fputs(", \"needed\": ", out);
+    strlist(out, T->strings, T->needed, T->nneeded, 1);
+    fputs(", \"needed_exact\": ", out);
+    strlist(out, T->strings, ex, R->nexact, 1);
+    fputs(", \"redundant\": [", out);
+    for (i = 0, k = 0; i < T->nstrings; i++)
+        if (T->contained_in[i] >= 0)
+            fprintf(out, "%s{\"string\": \"%s\", \"in\": \"%s\"}",
+                    k++ ? ", " : "", T->strings[i],
+                    T->strings[T->contained_in[i]]);
+    fputs("], \"goal\": ", out);
+    wc_set_fprint_json(out, R->goal);
+    fprintf(out, ", \"goal_in_strong\": %s", _wc_tf(R->goal_in_strong));
+    if (!R->goal_in_strong)
+    {
+        fputs(", \"goal_not_strong\": ", out);
+        wc_fprint_qvec(out, R->strong_witness, 3, 1);
+    }
+    fprintf(out, ", \"goal_in_strong_paper\": %s",
+            _wc_tf(R->goal_in_strong_paper));
+    if (!R->goal_in_strong_paper)
+    {
+        fputs(", \"goal_not_strong_paper\": ", out);
+        wc_fprint_qvec(out, R->paper_witness, 3, 1);
+    }
+    if (R->has_push)
+    {
+        fputs(", \"push\": {\"goal\": ", out);
+        wc_push_fprint(out, R->push_goal, 1, "");
+        putc('}', out);
+    }
+    if (R->complete)
+    {
+        fputs(", \"complete\": {\"accepted\": ", out);
+        wc_set_fprint_json(out, R->accepted);
+        fputs(", \"outside_goal\": ", out);
+        if (R->has_extra)
+            wc_fprint_qvec(out, R->extra, 3, 1);
+        else
+            fputs("null", out);
+        if (R->has_push_accepted)
+        {
+            fputs(", \"push\": ", out);
+            wc_push_fprint(out, R->push_accepted, 1, "");
+        }
+        putc('}', out);
+    }
+    fputs("}\n", out);
+}
+
+/* The plan as text; ex lists the exactly needed strings.  */
+static void
+plan_text(FILE * out, const wc_plan_t R, const wc_problem_t P,
+          const slong * ex)
+{
+    const wc_plan_strings_struct * T = R->T;
+    slong n = T->n, i, k;
+    ulong S, full = (UWORD(1) << n) - 1;
 
     fprintf(out, "insertion plan for %ld fixel%s (a state marks each "
             "achieved contact with 1):\n", (long) n, n == 1 ? "" : "s");
@@ -291,8 +285,20 @@ wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
             wc_push_fprint(out, R->push_accepted, 0, "    ");
         }
     }
+}
+
+int
+wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
+               int json)
+{
+    slong * ex = exact_list(R);
+
+    if (json)
+        plan_json(out, R, ex);
+    else
+        plan_text(out, R, P, ex);
     flint_free(ex);
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 static const char *
@@ -320,13 +326,13 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
     {
         fputs("{\"wrench\": ", out);
         wc_fprint_qvec(out, W->g, 3, 1);
-        fprintf(out, ", \"in_goal\": %s, \"holding\": ", tf(W->in_goal));
+        fprintf(out, ", \"in_goal\": %s, \"holding\": ", _wc_tf(W->in_goal));
         strlist(out, W->holding, NULL, W->nholding, 1);
         if (W->complete)
         {
             fprintf(out, ", \"complete\": {\"accepted\": %s, \"verdict\": "
                     "\"%s\", \"transitions\": [",
-                    tf(W->verdict == WC_PLAN_ACCEPTED),
+                    _wc_tf(W->verdict == WC_PLAN_ACCEPTED),
                     verdict_name(W->verdict));
             for (i = 0; i < W->nedges; i++)
             {
@@ -346,7 +352,7 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
             fputs("]}", out);
         }
         fputs("}\n", out);
-        return done(out);
+        return _wc_fprint_done(out);
     }
     fputs("wrench g = ", out);
     wc_fprint_qvec(out, W->g, 3, 0);
@@ -358,7 +364,7 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
         putc('\n', out);
     }
     if (!W->complete)
-        return done(out);
+        return _wc_fprint_done(out);
     fprintf(out, "  complete plan: %s", W->verdict == WC_PLAN_ACCEPTED
             ? "accepted: every run reaches the goal and stays\n"
             : "rejected: ");
@@ -396,7 +402,7 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
         fprintf(out, "  %s%s\n", W->via[i], W->from[i] == W->to[i]
                 ? "  (stays)" : "");
     }
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 int
@@ -418,7 +424,7 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
         fputs(", \"goal\": ", out);
         wc_set_fprint_json(out, G);
         fprintf(out, ", \"goal_in_strong\": %s, \"goal_in_strong_paper\": %s",
-                tf(R->goal_in_strong), tf(R->goal_in_strong_paper));
+                _wc_tf(R->goal_in_strong), _wc_tf(R->goal_in_strong_paper));
         if (R->has_push)
         {
             fputs(", \"push\": {\"goal\": ", out);
@@ -428,7 +434,7 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
         }
         putc('}', out);
         flint_free(ex);
-        return done(out);
+        return _wc_fprint_done(out);
     }
     fputs("mu = ", out);
     wc_fprint_fmpq(out, mu);
@@ -490,5 +496,5 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
                 total > 0 ? 100 * len / total : 0.0);
     }
     flint_free(ex);
-    return done(out);
+    return _wc_fprint_done(out);
 }

@@ -9,47 +9,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "wrenchcone.h"
+#include "exact/vec3.h"
+#include "io/print.h"
+#include "io/printutil.h"
 
-/* Row i of an fmpz_mat (FLINT 2.9 has no fmpz_mat_row).  */
-#define WC_ROW(A, i) ((A)->rows[i])
-
-static int
-done(FILE * out)
-{
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
-}
-
-void
-wc_fprint_fmpq(FILE * out, const fmpq_t x)
-{
-    char * s = fmpq_get_str(NULL, 10, x);
-
-    fputs(s, out);
-    flint_free(s);
-}
-
-void
-wc_fprint_json_string(FILE * out, const char * s)
-{
-    putc('"', out);
-    for (; *s != '\0'; s++)
-    {
-        unsigned char c = (unsigned char) *s;
-
-        if (c == '"' || c == '\\')
-            fprintf(out, "\\%c", c);
-        else if (c == '\n')
-            fputs("\\n", out);
-        else if (c == '\t')
-            fputs("\\t", out);
-        else if (c < 0x20)
-            fprintf(out, "\\u%04x", c);
-        else
-            putc(c, out);
-    }
-    putc('"', out);
-}
+/* The cdd writer below says done().  */
+#define done(out) _wc_fprint_done(out)
 
 static void
 json_fmpz(FILE * out, const fmpz_t x)
@@ -88,7 +53,7 @@ wc_cone_fprint_json(FILE * out, const wc_cone_t C)
     if (C->empty)
     {
         fputs("{\"empty\": true}", out);
-        return done(out);
+        return _wc_fprint_done(out);
     }
     fprintf(out, "{\"empty\": false, \"dim\": %ld, \"lineality_dim\": %ld, "
             "\"inequalities\": ", (long) C->dim, (long) C->lineality_dim);
@@ -108,10 +73,10 @@ wc_cone_fprint_json(FILE * out, const wc_cone_t C)
                 (long) F->dim);
         for (i = 0; i < F->nrays; i++)
             fprintf(out, "%s%ld", i ? ", " : "", (long) F->rays[i]);
-        fprintf(out, "], \"included\": %s}", F->included ? "true" : "false");
+        fprintf(out, "], \"included\": %s}", _wc_tf(F->included));
     }
     fputs("]}", out);
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 /* Rows of A, right-aligned per column, each line prefixed.  */
@@ -154,7 +119,7 @@ wc_cone_fprint_text(FILE * out, const wc_cone_t C, const char * indent)
     {
         fprintf(out, "%sempty (no wrench is consistent with this mode)\n",
                 indent);
-        return done(out);
+        return _wc_fprint_done(out);
     }
     excl = wc_cone_excluded_faces(C);
     fprintf(out, "%sdimension %ld, lineality %ld, %s", indent, (long) C->dim,
@@ -192,7 +157,7 @@ wc_cone_fprint_text(FILE * out, const wc_cone_t C, const char * indent)
         fprintf(out, "%*s%s\n", col < 28 ? 28 - col : 1, "",
                 F->included ? "included" : "excluded");
     }
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 static void
@@ -343,13 +308,13 @@ wc_trace_fprint_text(FILE * out, const wc_trace_t T, const char * prefix)
         }
         free(w);
     }
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 int
 wc_trace_fprint_json(FILE * out, const wc_trace_t T)
 {
-    slong e, i, j;
+    slong e, i;
 
     putc('[', out);
     for (e = 0; e < T->len; e++)
@@ -368,64 +333,14 @@ wc_trace_fprint_json(FILE * out, const wc_trace_t T)
                 (long) r, (long) c);
         for (i = 0; i < r; i++)
         {
-            fputs(i ? ", [" : "[", out);
-            for (j = 0; j < c; j++)
-            {
-                fputs(j ? ", \"" : "\"", out);
-                wc_fprint_fmpq(out, fmpq_mat_entry(t->m, i, j));
-                putc('"', out);
-            }
-            putc(']', out);
+            if (i)
+                fputs(", ", out);
+            wc_fprint_qvec(out, t->m->rows[i], c, 1);
         }
         fputs("]}", out);
     }
     putc(']', out);
-    return done(out);
-}
-
-static void
-json_fmpz_vec(FILE * out, const fmpz * v, slong len)
-{
-    slong j;
-
-    putc('[', out);
-    for (j = 0; j < len; j++)
-    {
-        if (j)
-            fputs(", ", out);
-        json_fmpz(out, v + j);
-    }
-    putc(']', out);
-}
-
-static void
-json_fmpq_vec(FILE * out, const fmpq * v, slong len)
-{
-    slong j;
-
-    putc('[', out);
-    for (j = 0; j < len; j++)
-    {
-        fputs(j ? ", \"" : "\"", out);
-        wc_fprint_fmpq(out, v + j);
-        putc('"', out);
-    }
-    putc(']', out);
-}
-
-static void
-text_fmpz_vec(FILE * out, const fmpz * v, slong len)
-{
-    slong j;
-
-    putc('(', out);
-    for (j = 0; j < len; j++)
-    {
-        if (j)
-            fputs(", ", out);
-        fmpz_fprint(out, v + j);
-    }
-    putc(')', out);
+    return _wc_fprint_done(out);
 }
 
 int
@@ -441,11 +356,11 @@ wc_modes_fprint(FILE * out, const wc_modes_t M, int json, int witness)
             if (witness)
             {
                 fputs("  nu = ", out);
-                text_fmpz_vec(out, WC_ROW(M->witness, i), 3);
+                _wc_fprint_zvec(out, WC_ROW(M->witness, i), 3, 0);
             }
             putc('\n', out);
         }
-        return done(out);
+        return _wc_fprint_done(out);
     }
     fprintf(out, "{\"fixels\": %ld, \"modes\": [", (long) M->n);
     for (i = 0; i < M->count; i++)
@@ -462,12 +377,12 @@ wc_modes_fprint(FILE * out, const wc_modes_t M, int json, int witness)
         {
             if (i)
                 fputs(", ", out);
-            json_fmpz_vec(out, WC_ROW(M->witness, i), 3);
+            _wc_fprint_zvec(out, WC_ROW(M->witness, i), 3, 1);
         }
         putc(']', out);
     }
     fputs("}\n", out);
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 int
@@ -483,7 +398,7 @@ wc_certificate_fprint(FILE * out, const wc_certificate_t C,
         if (C->feasible)
         {
             fputs("  witness twist nu = ", out);
-            text_fmpz_vec(out, C->witness, 3);
+            _wc_fprint_zvec(out, C->witness, 3, 0);
             fputs("\n  constraints (row . nu REL 0):\n", out);
         }
         else
@@ -492,7 +407,7 @@ wc_certificate_fprint(FILE * out, const wc_certificate_t C,
         for (i = 0; i < m; i++)
         {
             fputs("    ", out);
-            text_fmpz_vec(out, WC_ROW(C->rows, i), 3);
+            _wc_fprint_zvec(out, WC_ROW(C->rows, i), 3, 0);
             fprintf(out, " %s 0", wc_relation_str(C->rel[i]));
             if (!C->feasible)
             {
@@ -505,41 +420,41 @@ wc_certificate_fprint(FILE * out, const wc_certificate_t C,
             fputs("  sum of y_k row_k is 0, y >= 0 on > and >= rows, y > 0 on a "
                   "> row:\n  no twist satisfies the mode (Motzkin's "
                   "transposition theorem)\n", out);
-        return done(out);
+        return _wc_fprint_done(out);
     }
     fputs("{\"kind\": \"mode-feasibility\", \"mode\": ", out);
     wc_fprint_json_string(out, C->mode);
-    fprintf(out, ", \"feasible\": %s", C->feasible ? "true" : "false");
+    fprintf(out, ", \"feasible\": %s", _wc_tf(C->feasible));
     if (C->feasible)
     {
         fputs(", \"witness\": ", out);
-        json_fmpz_vec(out, C->witness, 3);
+        _wc_fprint_zvec(out, C->witness, 3, 1);
     }
     fputs(", \"constraints\": [", out);
     for (i = 0; i < m; i++)
     {
         fputs(i ? ", {\"row\": " : "{\"row\": ", out);
-        json_fmpz_vec(out, WC_ROW(C->rows, i), 3);
+        _wc_fprint_zvec(out, WC_ROW(C->rows, i), 3, 1);
         fprintf(out, ", \"relation\": \"%s\"}", wc_relation_str(C->rel[i]));
     }
     putc(']', out);
     if (!C->feasible)
     {
         fputs(", \"multipliers\": ", out);
-        json_fmpz_vec(out, C->mult, m);
+        _wc_fprint_zvec(out, C->mult, m, 1);
     }
     fputs(", \"problem\": {\"com\": ", out);
-    json_fmpq_vec(out, P->com, 2);
+    wc_fprint_qvec(out, P->com, 2, 1);
     fputs(", \"fixels\": [", out);
     for (i = 0; i < P->n; i++)
     {
         fputs(i ? ", {\"point\": " : "{\"point\": ", out);
-        json_fmpq_vec(out, P->fixels[i].point, 2);
+        wc_fprint_qvec(out, P->fixels[i].point, 2, 1);
         fputs(", \"normal\": ", out);
-        json_fmpq_vec(out, P->fixels[i].normal, 2);
+        wc_fprint_qvec(out, P->fixels[i].normal, 2, 1);
         fprintf(out, ", \"state\": \"%s\"}",
                 P->fixels[i].state == WC_NEAR ? "near" : "touching");
     }
     fputs("]}}\n", out);
-    return done(out);
+    return _wc_fprint_done(out);
 }

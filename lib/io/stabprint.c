@@ -8,72 +8,8 @@
 
 #include <string.h>
 
-#include "wrenchcone.h"
-
-static int
-done(FILE * out)
-{
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
-}
-
-void
-wc_fprint_qvec(FILE * out, const fmpq * v, slong len, int json)
-{
-    slong j;
-
-    putc(json ? '[' : '(', out);
-    for (j = 0; j < len; j++)
-    {
-        if (j)
-            fputs(", ", out);
-        if (json)
-            putc('"', out);
-        wc_fprint_fmpq(out, v + j);
-        if (json)
-            putc('"', out);
-    }
-    putc(json ? ']' : ')', out);
-}
-
-static void
-zvec(FILE * out, const fmpz * v, slong len, int json)
-{
-    slong j;
-
-    putc(json ? '[' : '(', out);
-    for (j = 0; j < len; j++)
-    {
-        if (j)
-            fputs(", ", out);
-        if (json)
-            putc('"', out);
-        fmpz_fprint(out, v + j);
-        if (json)
-            putc('"', out);
-    }
-    putc(json ? ']' : ')', out);
-}
-
-/* A rational as a JSON string.  */
-static void
-jq(FILE * out, const fmpq_t x)
-{
-    putc('"', out);
-    wc_fprint_fmpq(out, x);
-    putc('"', out);
-}
-
-static const char *
-yes(int b)
-{
-    return b ? "yes" : "no";
-}
-
-static const char *
-tf(int b)
-{
-    return b ? "true" : "false";
-}
+#include "io/print.h"
+#include "io/printutil.h"
 
 /* The forces of a solution in words: only the loaded fixels.  */
 static void
@@ -114,8 +50,8 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
         }
         fprintf(out, "], \"modes_complete\": %s, \"weakly_stable\": %s, \"strongly_stable\": %s, "
                 "\"strongly_stable_paper\": %s, \"motions\": [",
-                tf(R->modes_complete), tf(R->weak), tf(R->strong),
-                tf(R->strong_paper));
+                _wc_tf(R->modes_complete), _wc_tf(R->weak), _wc_tf(R->strong),
+                _wc_tf(R->strong_paper));
         for (i = 0; i < R->nmotions; i++)
         {
             fputs(i ? ", {\"sign\": " : "{\"sign\": ", out);
@@ -148,13 +84,13 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
             putc('}', out);
         }
         fputs("}\n", out);
-        return done(out);
+        return _wc_fprint_done(out);
     }
 
     fputs("wrench g = ", out);
     wc_fprint_qvec(out, R->g, 3, 0);
     fputs("  (fx, fy, torque)\n", out);
-    fprintf(out, "weakly stable: %s\n", yes(R->weak));
+    fprintf(out, "weakly stable: %s\n", _wc_yes(R->weak));
     if (R->weak)
     {
         fputs("  static forces (c_n, c_t): ", out);
@@ -169,7 +105,7 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
         putc('\n', out);
     }
     fprintf(out, "strongly stable (exact semantics, Pang and Trinkle): %s\n",
-            yes(R->strong));
+            _wc_yes(R->strong));
     if (R->strong)
         fputs("  no moving face admits a solution (every face decided by an"
               " exact LP;\n  --certificate writes a Farkas certificate per"
@@ -177,7 +113,7 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
     else if (!R->weak)
         fputs("  not weakly stable\n", out);
     fprintf(out, "strongly stable (paper semantics, eq. 19): %s\n",
-            yes(R->strong_paper));
+            _wc_yes(R->strong_paper));
     if (!R->strong_paper)
     {
         fprintf(out, "  W(%s) holds the wrench: nudot = ", R->paper.sign);
@@ -210,7 +146,7 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
         text_forces(out, R->motions[i].c, n);
         putc('\n', out);
     }
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 int
@@ -219,7 +155,7 @@ wc_set_fprint_json(FILE * out, const wc_set_t S)
     slong i;
 
     fprintf(out, "{\"empty\": %s, \"interior\": %s, \"pieces\": [",
-            tf(S->empty), tf(S->interior));
+            _wc_tf(S->empty), _wc_tf(S->interior));
     for (i = 0; i < S->npieces; i++)
     {
         if (i)
@@ -227,7 +163,7 @@ wc_set_fprint_json(FILE * out, const wc_set_t S)
         wc_cone_fprint_json(out, S->pieces + i);
     }
     fputs("]}", out);
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 int
@@ -250,7 +186,7 @@ wc_set_fprint_text(FILE * out, const wc_set_t S, const char * indent)
         wc_cone_fprint_text(out, S->pieces + i, in2);
     }
     free(in2);
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 int
@@ -281,12 +217,12 @@ wc_push_fprint(FILE * out, const wc_push_t R, int json, const char * indent)
             else
             {
                 fputs("{\"from\": ", out);
-                zvec(out, v->dfrom, 2, 1);
+                _wc_fprint_zvec(out, v->dfrom, 2, 1);
                 fputs(", \"to\": ", out);
-                zvec(out, v->dto, 2, 1);
+                _wc_fprint_zvec(out, v->dto, 2, 1);
             }
             fprintf(out, ", \"from_closed\": %s, \"to_closed\": %s",
-                    tf(v->from_closed), tf(v->to_closed));
+                    _wc_tf(v->from_closed), _wc_tf(v->to_closed));
             if (v->full)
                 fputs(", \"full\": true", out);
             putc('}', out);
@@ -307,15 +243,15 @@ wc_push_fprint(FILE * out, const wc_push_t R, int json, const char * indent)
         {
             fprintf(out, "%sarc from direction %c", indent,
                     v->from_closed ? '[' : '(');
-            zvec(out, v->dfrom, 2, 0);
+            _wc_fprint_zvec(out, v->dfrom, 2, 0);
             fputs(" counter-clockwise to ", out);
-            zvec(out, v->dto, 2, 0);
+            _wc_fprint_zvec(out, v->dto, 2, 0);
             fprintf(out, "%c\n", v->to_closed ? ']' : ')');
         }
     }
     if (json)
         putc(']', out);
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 int
@@ -330,13 +266,13 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
         fputs(", \"strong_paper\": ", out);
         wc_set_fprint_json(out, S->strong_paper);
         fprintf(out, ", \"paper_in_weak\": %s, \"semantics_differ\": %s",
-                tf(S->paper_in_weak), tf(S->differ));
+                _wc_tf(S->paper_in_weak), _wc_tf(S->differ));
         if (S->differ)
         {
             fputs(", \"difference_witness\": {\"wrench\": ", out);
             wc_fprint_qvec(out, S->diff_g, 3, 1);
             fprintf(out, ", \"strong\": %s, \"strong_paper\": %s}",
-                    tf(S->diff_in_exact), tf(!S->diff_in_exact));
+                    _wc_tf(S->diff_in_exact), _wc_tf(!S->diff_in_exact));
         }
         if (S->has_push)
         {
@@ -350,7 +286,7 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
         }
         if (json == 1)
             fputs("}\n", out);
-        return done(out);
+        return _wc_fprint_done(out);
     }
     fputs("weakly stable wrenches (a static solution exists; closed):\n",
           out);
@@ -387,7 +323,7 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
         fputs("  strongly stable (paper):\n", out);
         wc_push_fprint(out, S->push_strong_paper, 0, "    ");
     }
-    return done(out);
+    return _wc_fprint_done(out);
 }
 
 /* The certificate (verify.h, kind "strong-stability").  */
@@ -398,9 +334,9 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
     slong i;
 
     fputs("{\"kind\": \"strong-stability\",\n \"problem\": {\"mass\": ", out);
-    jq(out, P->mass);
+    _wc_fprint_jq(out, P->mass);
     fputs(", \"inertia\": ", out);
-    jq(out, P->inertia);
+    _wc_fprint_jq(out, P->inertia);
     fputs(", \"com\": ", out);
     wc_fprint_qvec(out, P->com, 2, 1);
     fputs(",\n  \"fixels\": [", out);
@@ -415,9 +351,9 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
         wc_fprint_qvec(out, f->normal, 2, 1);
         fprintf(out, ", \"state\": \"%s\", \"mu_s\": ",
                 f->state == WC_TOUCHING ? "touching" : "near");
-        jq(out, f->mu_s);
+        _wc_fprint_jq(out, f->mu_s);
         fputs(", \"mu_k\": ", out);
-        jq(out, f->mu_k);
+        _wc_fprint_jq(out, f->mu_k);
         fputc('}', out);
     }
     fputs("]},\n \"wrench\": ", out);

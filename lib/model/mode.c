@@ -68,34 +68,3 @@ wc_mode_check(const wc_problem_t P, const char * mode, wc_mode_table table,
     }
     return WC_OK;
 }
-
-int
-wc_problem_check(const wc_problem_t P, wc_error_t err)
-{
-    slong i;
-
-    if (P->n < 1 || P->fixels == NULL)
-        return wc_error_set(err, WC_EINPUT, P->file, 0, 0,
-                            "no fixel in the problem");
-    if (fmpq_sgn(P->mass) <= 0)
-        return wc_error_set(err, WC_EINPUT, P->file, 0, 0,
-                            "mass must be positive");
-    if (fmpq_sgn(P->inertia) <= 0)
-        return wc_error_set(err, WC_EINPUT, P->file, 0, 0,
-                            "inertia must be positive");
-    for (i = 0; i < P->n; i++)
-    {
-        const wc_fixel_struct * f = P->fixels + i;
-
-        if (fmpq_is_zero(f->normal + 0) && fmpq_is_zero(f->normal + 1))
-            return wc_error_set(err, WC_EINPUT, P->file, f->line, f->col,
-                                "fixel %ld has a zero normal", (long) i + 1);
-        if (fmpq_sgn(f->mu_s) < 0 || fmpq_sgn(f->mu_k) < 0)
-            return wc_error_set(err, WC_EINPUT, P->file, f->line, f->col,
-                                "fixel %ld has negative friction", (long) i + 1);
-        if (f->state != WC_TOUCHING && f->state != WC_NEAR)
-            return wc_error_set(err, WC_EINPUT, P->file, f->line, f->col,
-                                "fixel %ld has an unknown state", (long) i + 1);
-    }
-    return WC_OK;
-}

@@ -6,7 +6,7 @@
 
 #include <config.h>
 
-#include "wrenchcone.h"
+#include "model/model.h"
 
 void
 wc_fixel_tangent(fmpq * t, const wc_fixel_struct * f)

@@ -1,0 +1,275 @@
+/* plancones.c -- the cones of a plan's strings, their arrangement, and
+   which cells lie in which cone.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Membership of a cell is read at its point, so the sets built on it are
+   exact.  */
+
+#include <config.h>
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "analysis/planparts.h"
+#include "analysis/wrench.h"
+
+/* W(x) for P, whose fixel states are set from the letters: m, l, r, n
+   touching; a, u near; s leaves the state alone (it means the same in
+   both).  Q is a scratch copy of P.  */
+static int
+string_cone(wc_cone_t W, wc_problem_t Q, const char * x, wc_error_t err)
+{
+    slong i;
+
+    for (i = 0; i < Q->n; i++)
+    {
+        if (strchr("mlrn", x[i]) != NULL)
+            Q->fixels[i].state = WC_TOUCHING;
+        else if (x[i] == 'a' || x[i] == 'u')
+            Q->fixels[i].state = WC_NEAR;
+    }
+    return wc_wrench_cone_direct(W, NULL, Q, x, err);
+}
+
+wc_cone_struct *
+_wc_plan_cones_init(slong count)
+{
+    wc_cone_struct * C = flint_malloc(sizeof(wc_cone_struct) * (count + 1));
+    slong i;
+
+    for (i = 0; i < count; i++)
+        wc_cone_init(C + i, 3);
+    return C;
+}
+
+void
+_wc_plan_cones_clear(wc_cone_struct * C, slong count)
+{
+    slong i;
+
+    if (C == NULL)
+        return;
+    for (i = 0; i < count; i++)
+        wc_cone_clear(C + i);
+    flint_free(C);
+}
+
+/* The outcome string of index x (base-3 digits, fixel 0 first).  */
+void
+_wc_plan_outcome_string(char * s, slong x, slong n)
+{
+    slong i;
+
+    for (i = n - 1; i >= 0; i--, x /= 3)
+        s[i] = "sma"[x % 3];
+    s[n] = '\0';
+}
+
+slong
+_wc_plan_pow3(slong n)
+{
+    slong p = 1;
+
+    while (n-- > 0)
+        p *= 3;
+    return p;
+}
+
+/* C[k] := W(x[k]) for P, k < count.  */
+static int
+strings_cones(wc_cone_struct * C, char * const * x, const slong * idx,
+              slong count, const wc_problem_t P, wc_error_t err)
+{
+    wc_problem_t Q;
+    slong k;
+    int status;
+
+    wc_problem_init(Q);
+    if ((status = wc_problem_set(Q, P)) != WC_OK)
+        wc_error_set(err, status, NULL, 0, 0, "out of memory");
+    for (k = 0; k < count && status == WC_OK; k++)
+        status = string_cone(C + k, Q, x[idx != NULL ? idx[k] : k], err);
+    wc_problem_clear(Q);
+    return status;
+}
+
+int
+_wc_plan_needed_cones(wc_cone_struct * C, const wc_plan_strings_t T,
+                      const wc_problem_t P, wc_error_t err)
+{
+    return strings_cones(C, T->strings, T->needed, T->nneeded, P, err);
+}
+
+/* The 3^n outcome strings, in index order.  */
+static char **
+outcome_strings(slong count, slong n)
+{
+    char ** x = calloc(count + 1, sizeof(char *));
+    slong k;
+
+    for (k = 0; k < count; k++)
+    {
+        x[k] = malloc(n + 1);
+        _wc_plan_outcome_string(x[k], k, n);
+    }
+    return x;
+}
+
+static void
+strings_free(char ** x, slong count)
+{
+    slong k;
+
+    for (k = 0; k < count; k++)
+        free(x[k]);
+    free(x);
+}
+
+int
+_wc_plan_outcome_cones(wc_cone_struct * C, slong count, const wc_problem_t P,
+                       wc_error_t err)
+{
+    char ** x = outcome_strings(count, P->n);
+    int status = strings_cones(C, x, NULL, count, P, err);
+
+    strings_free(x, count);
+    return status;
+}
+
+/* Append the facet and equality normals of C to the rows of A (r used).  */
+void
+_wc_plan_add_planes(fmpz_mat_t A, slong * r, const wc_cone_t C)
+{
+    slong i, k, ni = fmpz_mat_nrows(C->ineqs), ne = fmpz_mat_nrows(C->eqs);
+
+    if (*r + ni + ne > fmpz_mat_nrows(A))
+    {
+        fmpz_mat_t B;
+        slong rows = 2 * (*r + ni + ne) + 16;
+
+        fmpz_mat_init(B, rows, 3);
+        for (i = 0; i < *r; i++)
+            for (k = 0; k < 3; k++)
+                fmpz_swap(fmpz_mat_entry(B, i, k), fmpz_mat_entry(A, i, k));
+        fmpz_mat_swap(A, B);
+        fmpz_mat_clear(B);
+    }
+    for (i = 0; i < ni + ne; i++, (*r)++)
+        for (k = 0; k < 3; k++)
+            fmpz_set(fmpz_mat_entry(A, *r, k), i < ni
+                     ? fmpz_mat_entry(C->ineqs, i, k)
+                     : fmpz_mat_entry(C->eqs, i - ni, k));
+}
+
+/* The first r rows of A, as a matrix of their own (for wc_cells_build).  */
+void
+_wc_plan_cells_build(wc_cells_t cells, int * status, fmpz_mat_t A, slong r,
+                     wc_error_t err)
+{
+    fmpz_mat_t B;
+    slong i, k;
+
+    if (*status != WC_OK)
+        return;
+    fmpz_mat_init(B, r, 3);
+    for (i = 0; i < r; i++)
+        for (k = 0; k < 3; k++)
+            fmpz_swap(fmpz_mat_entry(B, i, k), fmpz_mat_entry(A, i, k));
+    *status = wc_cells_build(cells, B, err);
+    fmpz_mat_clear(B);
+}
+
+void
+_wc_plan_cell_point(fmpq * g, const wc_cells_t A, slong i)
+{
+    slong k;
+
+    for (k = 0; k < 3; k++)
+        fmpq_set_fmpz(g + k, fmpz_mat_entry(A->point, i, k));
+}
+
+static void
+key_init(wc_cone_key * K, const wc_cone_struct * C, const wc_cells_t A)
+{
+    slong i, k;
+
+    K->C = C;
+    K->nf = fmpz_mat_nrows(C->ineqs);
+    K->ne = fmpz_mat_nrows(C->eqs);
+    K->plane = malloc(sizeof(slong) * (K->nf + K->ne + 1));
+    K->orient = malloc(K->nf + K->ne + 1);
+    K->top = !C->empty && C->nfaces > 0 && C->faces[C->nfaces - 1].included;
+    K->usable = !C->empty;
+    for (i = 0; i < K->nf + K->ne; i++)
+    {
+        const fmpz * h = i < K->nf ? C->ineqs->rows[i]
+            : C->eqs->rows[i - K->nf];
+
+        K->plane[i] = wc_cells_plane_index(A, h);
+        K->usable = K->usable && K->plane[i] >= 0;
+        for (k = 0; k < 3 && fmpz_is_zero(h + k); k++)
+            ;
+        K->orient[i] = (signed char) (k < 3 ? fmpz_sgn(h + k) : 0);
+    }
+}
+
+static void
+key_clear(wc_cone_key * K)
+{
+    free(K->plane);
+    free(K->orient);
+}
+
+/* 1 when cell i of A (point g) lies in K's cone.  */
+int
+_wc_cone_key_contains(const wc_cone_key * K, const wc_cells_t A, slong i,
+                      const fmpq * g)
+{
+    const signed char * s = A->sign + i * A->nplanes;
+    slong j;
+    int strict = 1;
+
+    if (K->C->empty)
+        return 0;
+    if (!K->usable)
+        return wc_cone_contains(K->C, g);
+    for (j = 0; j < K->ne; j++)
+        if (s[K->plane[K->nf + j]] != 0)
+            return 0;
+    for (j = 0; j < K->nf; j++)
+    {
+        int t = K->orient[j] * s[K->plane[j]];
+
+        if (t > 0)
+            return 0;
+        strict = strict && t < 0;
+    }
+    return strict ? K->top : wc_cone_contains(K->C, g);
+}
+
+wc_cone_key *
+_wc_cone_keys_init(const wc_cone_struct * C, slong count, const wc_cells_t A)
+{
+    wc_cone_key * K = malloc(sizeof(wc_cone_key) * (count + 1));
+    slong i;
+
+    for (i = 0; i < count; i++)
+        key_init(K + i, C + i, A);
+    return K;
+}
+
+void
+_wc_cone_keys_clear(wc_cone_key * K, slong count)
+{
+    slong i;
+
+    if (K == NULL)
+        return;
+    for (i = 0; i < count; i++)
+        key_clear(K + i);
+    free(K);
+}
+

@@ -1,0 +1,99 @@
+/* planparts.h -- the pieces insertion plans are built from.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Internal (not installed): plan.c, plansweep.c and the files below.
+   Every set of a plan is a union of cells of one arrangement, the planes
+   of every cone it is built from.  */
+
+#ifndef WC_PLANPARTS_H
+#define WC_PLANPARTS_H
+
+#include "analysis/plan.h"
+#include "exact/cells.h"
+#include "exact/cone.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Cones of strings (plancones.c).  An array of count cones of dimension
+   3, and its release (C may be NULL).  */
+wc_cone_struct * _wc_plan_cones_init(slong count);
+void _wc_plan_cones_clear(wc_cone_struct * C, slong count);
+
+/* The outcome string of index x (base-3 digits, fixel 0 first), and the
+   number of outcomes, 3^n.  */
+void _wc_plan_outcome_string(char * s, slong x, slong n);
+slong _wc_plan_pow3(slong n);
+
+/* C[k] := W(x) for P and the k-th needed string x of T, or the k-th of the
+   3^n outcome strings (count of them).  */
+int _wc_plan_needed_cones(wc_cone_struct * C, const wc_plan_strings_t T,
+                          const wc_problem_t P, wc_error_t err);
+int _wc_plan_outcome_cones(wc_cone_struct * C, slong count,
+                           const wc_problem_t P, wc_error_t err);
+
+/* Append the facet and equality normals of C to the rows of A (r used);
+   build cells from the first r rows of A (nothing when *status is not
+   WC_OK); the point of cell i as a wrench.  */
+void _wc_plan_add_planes(fmpz_mat_t A, slong * r, const wc_cone_t C);
+void _wc_plan_cells_build(wc_cells_t cells, int * status, fmpz_mat_t A,
+                          slong r, wc_error_t err);
+void _wc_plan_cell_point(fmpq * g, const wc_cells_t A, slong i);
+
+/* Membership of cells in a cone from the cells' sign vectors: the cone's
+   facets and equalities are planes of the arrangement, so a cell is out
+   as soon as one sign is wrong, and in when it is strictly inside every
+   facet (the relative interior, included unless the cone is a single
+   excluded face).  Only the cells on the cone's boundary need the face
+   lattice (wc_cone_contains).  This replaces arithmetic by byte lookups
+   in the inner loop of every set here.  */
+typedef struct
+{
+    const wc_cone_struct * C;
+    slong nf, ne;
+    slong * plane;          /* nf facets, then ne equalities; -1: none */
+    signed char * orient;   /* the facet's sign relative to its plane */
+    int top;                /* the relative interior belongs to C */
+    int usable;
+}
+wc_cone_key;
+
+/* Keys of the count cones C for the cells A, and their release.  */
+wc_cone_key * _wc_cone_keys_init(const wc_cone_struct * C, slong count,
+                                 const wc_cells_t A);
+void _wc_cone_keys_clear(wc_cone_key * K, slong count);
+
+/* 1 when cell i of A (point g) lies in K's cone.  */
+int _wc_cone_key_contains(const wc_cone_key * K, const wc_cells_t A,
+                          slong i, const fmpq * g);
+
+/* The complete plan's transition graph (plangraph.c).  States are bit
+   masks; n <= 6, so a state's successors fit in one ulong.  */
+typedef void (* wc_plan_edge_fn)(void * ctx, ulong from, ulong to,
+                                 slong outcome);
+
+/* Every transition the outcomes admitted by member[] allow.  */
+void _wc_plan_transitions(slong n, const unsigned char * member,
+                          wc_plan_edge_fn add, void * ctx);
+
+/* An edge function whose ctx is the adjacency array (ulong per state).  */
+void _wc_plan_add_adj(void * ctx, ulong from, ulong to, slong outcome);
+
+/* The verdict of the graph adj; with cycle != NULL, the states of a cycle
+   (or the offending state) in cycle[0 .. *ncycle).  */
+wc_plan_verdict _wc_plan_graph_verdict(const ulong * adj, slong n,
+                                       ulong * cycle, slong * ncycle);
+
+/* wc_problem_check, and at most WC_PLAN_MAX_FIXELS fixels
+   (WC_PLAN_MAX_FIXELS_COMPLETE when complete) (plan.c).  */
+int _wc_plan_check_size(const wc_problem_t P, int complete, wc_error_t err);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,31 @@
+/* version.h -- one-time set-up of the exact backends, and version strings.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.  */
+
+#ifndef WC_VERSION_H
+#define WC_VERSION_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Optional one-time set-up of the exact backends (cddlib's global
+   constants).  Every library function that needs it calls it; it is
+   idempotent, so callers that use cddlib themselves call this instead of
+   dd_set_global_constants().  */
+void wc_init(void);
+
+/* Version strings: ours, and those of the GMP, FLINT and cddlib we run
+   with.  Static storage; never NULL.  */
+const char * wc_version(void);
+const char * wc_gmp_version(void);
+const char * wc_flint_version(void);
+const char * wc_cdd_version(void);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,41 @@
+/* printutil.h -- the small writers every printer shares.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Internal (not installed).  The public ones (wc_fprint_fmpq,
+   wc_fprint_qvec, wc_fprint_json_string) are declared in print.h.  */
+
+#ifndef WC_PRINTUTIL_H
+#define WC_PRINTUTIL_H
+
+#include <stdio.h>
+#include <flint/flint.h>
+#include <flint/fmpz.h>
+#include <flint/fmpq.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* What a writer returns: WC_OK, or WC_EINTERNAL when the stream reports
+   an error.  */
+int _wc_fprint_done(FILE * out);
+
+/* "true" / "false", and "yes" / "no".  */
+const char * _wc_tf(int b);
+const char * _wc_yes(int b);
+
+/* A rational as a JSON string, "p/q".  */
+void _wc_fprint_jq(FILE * out, const fmpq_t x);
+
+/* A vector of len integers: "(a, b, c)" as text, or ["a", "b", "c"] as
+   JSON.  */
+void _wc_fprint_zvec(FILE * out, const fmpz * v, slong len, int json);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
