@@ -17,34 +17,43 @@
    tampered certificate may hold numbers of any size.  */
 #define SHOW_DIGITS 40
 
+/* Room for n more bytes and a NUL; 0 (and b->oom) when there is none.  */
+static int
+reserve(wc_check_text * b, size_t n)
+{
+    size_t cap;
+    char * t;
+
+    if (b->oom)
+        return 0;
+    if (b->cap - b->len > n)
+        return 1;
+    cap = b->cap < 64 ? 64 : b->cap;
+    while (cap - b->len <= n)
+    {
+        if (cap > SIZE_MAX / 2)
+        {
+            b->oom = 1;
+            return 0;
+        }
+        cap *= 2;
+    }
+    t = realloc(b->s, cap);
+    if (t == NULL)
+    {
+        b->oom = 1;
+        return 0;
+    }
+    b->s = t;
+    b->cap = cap;
+    return 1;
+}
+
 void
 _wc_check_put_n(wc_check_text * b, const char * s, size_t n)
 {
-    if (b->oom)
+    if (!reserve(b, n))
         return;
-    if (b->cap - b->len <= n)
-    {
-        size_t cap = b->cap < 64 ? 64 : b->cap;
-        char * t;
-
-        while (cap - b->len <= n)
-        {
-            if (cap > SIZE_MAX / 2)
-            {
-                b->oom = 1;
-                return;
-            }
-            cap *= 2;
-        }
-        t = realloc(b->s, cap);
-        if (t == NULL)
-        {
-            b->oom = 1;
-            return;
-        }
-        b->s = t;
-        b->cap = cap;
-    }
     memcpy(b->s + b->len, s, n);
     b->len += n;
     b->s[b->len] = '\0';
@@ -56,12 +65,12 @@ _wc_check_put(wc_check_text * b, const char * s)
     _wc_check_put_n(b, s, strlen(s));
 }
 
+/* Formatted straight into the buffer: measured first, then written.  */
 void
 _wc_check_putf(wc_check_text * b, const char * fmt, ...)
 {
     va_list ap;
     int n;
-    char * t;
 
     va_start(ap, fmt);
     n = vsnprintf(NULL, 0, fmt, ap);
@@ -71,17 +80,12 @@ _wc_check_putf(wc_check_text * b, const char * fmt, ...)
         b->oom = 1;
         return;
     }
-    t = malloc((size_t) n + 1);
-    if (t == NULL)
-    {
-        b->oom = 1;
+    if (!reserve(b, (size_t) n))
         return;
-    }
     va_start(ap, fmt);
-    vsnprintf(t, (size_t) n + 1, fmt, ap);
+    vsnprintf(b->s + b->len, (size_t) n + 1, fmt, ap);
     va_end(ap);
-    _wc_check_put_n(b, t, (size_t) n);
-    free(t);
+    b->len += (size_t) n;
 }
 
 void
