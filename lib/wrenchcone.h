@@ -24,6 +24,7 @@
 #include "io/print.h"
 #include "float/floatcone.h"
 #include "float/compare.h"
+#include "io/compareprint.h"
 #include "exact/cells.h"
 #include "analysis/push.h"
 #include "analysis/stability.h"

@@ -4,8 +4,15 @@
 
 lib_libwc_la_SOURCES += \
 	lib/float/floatcone.c \
+	lib/float/angle.c \
+	lib/float/hausdorff.c \
+	lib/float/foreign.c \
+	lib/float/foreigncdd.c \
 	lib/float/compare.c
 wcfloatdir = $(pkgincludedir)/float
 wcfloat_HEADERS = \
 	lib/float/floatcone.h \
 	lib/float/compare.h
+noinst_HEADERS += \
+	lib/float/angle.h \
+	lib/float/foreign.h

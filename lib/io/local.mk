@@ -3,7 +3,9 @@
 lib_libwc_la_SOURCES += \
 	lib/io/print.c \
 	lib/io/stabprint.c \
-	lib/io/planprint.c
+	lib/io/planprint.c \
+	lib/io/compareprint.c
 wciodir = $(pkgincludedir)/io
 wcio_HEADERS = \
-	lib/io/print.h
+	lib/io/print.h \
+	lib/io/compareprint.h
