@@ -23,6 +23,7 @@
 #include "core/random.h"
 #include "io/print.h"
 #include "float/floatcone.h"
+#include "io/fconeprint.h"
 #include "float/compare.h"
 #include "io/compareprint.h"
 #include "exact/cells.h"

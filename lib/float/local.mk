@@ -3,7 +3,9 @@
 # exact one.
 
 lib_libwc_la_SOURCES += \
+	lib/float/dmat.c \
 	lib/float/floatcone.c \
+	lib/float/fconediff.c \
 	lib/float/angle.c \
 	lib/float/hausdorff.c \
 	lib/float/foreign.c \
@@ -14,5 +16,6 @@ wcfloat_HEADERS = \
 	lib/float/floatcone.h \
 	lib/float/compare.h
 noinst_HEADERS += \
+	lib/float/dmat.h \
 	lib/float/angle.h \
 	lib/float/foreign.h

@@ -2,10 +2,15 @@
 
 lib_libwc_la_SOURCES += \
 	lib/io/print.c \
+	lib/io/cddwrite.c \
 	lib/io/stabprint.c \
 	lib/io/planprint.c \
+	lib/io/fconeprint.c \
 	lib/io/compareprint.c
 wciodir = $(pkgincludedir)/io
 wcio_HEADERS = \
 	lib/io/print.h \
+	lib/io/fconeprint.h \
 	lib/io/compareprint.h
+noinst_HEADERS += \
+	lib/io/cddwrite.h
