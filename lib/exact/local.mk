@@ -14,4 +14,5 @@ wcexact_HEADERS = \
 noinst_HEADERS += \
 	lib/exact/vec3.h \
 	lib/exact/cddbridge.h \
-	lib/exact/hull3.h
+	lib/exact/hull3.h \
+	lib/exact/cddconv.inc
