@@ -371,6 +371,111 @@ cdd_finish(wc_foreign_t F, cdd_block * B, const _wc_source * s, long no,
     return WC_OK;
 }
 
+/* A NUL byte: an error at its place.  */
+static int
+cdd_nul(const _wc_source * s, const char * nul)
+{
+    size_t at = (size_t) (nul - s->text), i, ls = 0;
+    long l = 1;
+
+    for (i = 0; i < at; i++)
+        if (s->text[i] == '\n')
+        {
+            l++;
+            ls = i + 1;
+        }
+    return _wc_located(s, l, (long) (at - ls) + 1, "NUL byte in the file");
+}
+
+/* 'H-representation' or 'V-representation' (tokens t[0..n)).  */
+static int
+cdd_kind(cdd_block * B, const wc_foreign_t F, const _wc_source * s,
+         long no, const token * t, slong n)
+{
+    int k = tok_is(s, t, "H-representation")
+        ? WC_REP_INEQUALITIES : WC_REP_GENERATORS;
+
+    if (n > 1)
+        return _wc_located_quoting(s, no, t[1].col, "unexpected '%s' after "
+                                   "the representation", s->text + t[1].a,
+                                   t[1].b - t[1].a);
+    if (B->kind >= 0)
+        return _wc_located(s, no, t[0].col, "a second representation "
+                           "keyword (the first is line %ld)", B->kind_line);
+    if (F->nreps == 2 || (F->nreps == 1 && (int) F->reps[0].kind == k))
+        return _wc_located(s, no, t[0].col, "a second %s",
+                           k == WC_REP_INEQUALITIES ? "H-representation"
+                           : "V-representation");
+    B->kind = k;
+    B->kind_line = no;
+    return WC_OK;
+}
+
+/* 'begin' (tokens t[0..n)); *st becomes CDD_HEADER.  */
+static int
+cdd_begin(cdd_block * B, cdd_state * st, const wc_foreign_t F,
+          const _wc_source * s, long no, const token * t, slong n)
+{
+    if (n > 1)
+        return _wc_located_quoting(s, no, t[1].col, "unexpected '%s' after "
+                                   "'begin'", s->text + t[1].a,
+                                   t[1].b - t[1].a);
+    B->begin_line = no;
+    *st = CDD_HEADER;
+    if (B->kind >= 0)
+        return WC_OK;
+    /* cdd's default */
+    B->kind = WC_REP_INEQUALITIES;
+    B->kind_line = no;
+    if (F->nreps == 1 && F->reps[0].kind == WC_REP_INEQUALITIES)
+        return _wc_located(s, no, t[0].col, "a second H-representation");
+    return WC_OK;
+}
+
+/* A line outside begin..end: before the first block or after one.  */
+static int
+cdd_outside(cdd_block * B, cdd_state * st, const wc_foreign_t F,
+            const _wc_source * s, long no, size_t start, size_t end,
+            const token * t, slong n, int seen_line)
+{
+    if (tok_is(s, t, "H-representation") || tok_is(s, t, "V-representation"))
+        return cdd_kind(B, F, s, no, t, n);
+    if (tok_is(s, t, "linearity"))
+        return cdd_linearity(B, s, no, s->text, start, end);
+    if (tok_is(s, t, "begin"))
+        return cdd_begin(B, st, F, s, no, t, n);
+    if (*st == CDD_BEFORE && !seen_line && B->kind < 0 && B->lin_line == 0)
+        return WC_OK;   /* a name line, as lrs writes */
+    return _wc_located_quoting(s, no, t[0].col, *st == CDD_BEFORE
+                               ? "unexpected '%s' before 'begin'"
+                               : "unexpected '%s' after 'end'",
+                               s->text + t[0].a, t[0].b - t[0].a);
+}
+
+/* Where the file ended: an error unless outside a block, after one.  */
+static int
+cdd_end_of_file(const cdd_block * B, cdd_state st, const wc_foreign_t F,
+                const _wc_source * s, long no, long last_col)
+{
+    /* the position after the last byte */
+    if (s->len > 0 && s->text[s->len - 1] == '\n')
+    {
+        no++;
+        last_col = 1;
+    }
+    if (no == 0)
+        no = 1;
+    if (st == CDD_HEADER || st == CDD_ROWS)
+        return _wc_located(s, no, last_col, "end of file before 'end'");
+    if (st == CDD_BEFORE || B->kind >= 0 || B->lin_line != 0)
+        return _wc_located(s, no, last_col, F->nreps == 0 && B->kind < 0
+                           && B->lin_line == 0
+                           ? "no cone here: expected a cdd file "
+                           "(H- or V-representation, 'begin' .. 'end') "
+                           "or a JSON cone" : "end of file before 'begin'");
+    return WC_OK;
+}
+
 int
 _wc_foreign_parse_cdd(wc_foreign_t F, const _wc_source * s)
 {
@@ -380,22 +485,11 @@ _wc_foreign_parse_cdd(wc_foreign_t F, const _wc_source * s)
     cdd_state st = CDD_BEFORE;
     cdd_block B;
     int status = WC_OK, seen_line = 0;
-    char * nul = memchr(text, '\0', len);
+    const char * nul = memchr(text, '\0', len);
 
-    block_init(&B);
     if (nul != NULL)
-    {
-        size_t at = (size_t) (nul - text), i, ls = 0;
-        long l = 1;
-
-        for (i = 0; i < at; i++)
-            if (text[i] == '\n')
-            {
-                l++;
-                ls = i + 1;
-            }
-        return _wc_located(s, l, (long) (at - ls) + 1, "NUL byte in the file");
-    }
+        return cdd_nul(s, nul);
+    block_init(&B);
     while (pos < len && status == WC_OK)
     {
         size_t start = pos, end;
@@ -414,66 +508,8 @@ _wc_foreign_parse_cdd(wc_foreign_t F, const _wc_source * s)
         {
         case CDD_AFTER:
         case CDD_BEFORE:
-            if (tok_is(s, t, "H-representation")
-                || tok_is(s, t, "V-representation"))
-            {
-                int k = tok_is(s, t, "H-representation")
-                    ? WC_REP_INEQUALITIES : WC_REP_GENERATORS;
-
-                if (n > 1)
-                    status = _wc_located_quoting(s, no, t[1].col, "unexpected "
-                                                 "'%s' after the representation",
-                                                 text + t[1].a,
-                                                 t[1].b - t[1].a);
-                else if (B.kind >= 0)
-                    status = _wc_located(s, no, t[0].col, "a second "
-                                         "representation keyword (the first is "
-                                         "line %ld)", B.kind_line);
-                else if (F->nreps == 2 || (F->nreps == 1
-                                           && (int) F->reps[0].kind == k))
-                    status = _wc_located(s, no, t[0].col, "a second %s",
-                                         k == WC_REP_INEQUALITIES
-                                         ? "H-representation"
-                                         : "V-representation");
-                else
-                {
-                    B.kind = k;
-                    B.kind_line = no;
-                }
-            }
-            else if (tok_is(s, t, "linearity"))
-                status = cdd_linearity(&B, s, no, text, start, end);
-            else if (tok_is(s, t, "begin"))
-            {
-                if (n > 1)
-                    status = _wc_located_quoting(s, no, t[1].col, "unexpected "
-                                                 "'%s' after 'begin'",
-                                                 text + t[1].a,
-                                                 t[1].b - t[1].a);
-                else
-                {
-                    if (B.kind < 0)
-                    {
-                        /* cdd's default */
-                        B.kind = WC_REP_INEQUALITIES;
-                        B.kind_line = no;
-                        if (F->nreps == 1
-                            && F->reps[0].kind == WC_REP_INEQUALITIES)
-                            status = _wc_located(s, no, t[0].col, "a second "
-                                                 "H-representation");
-                    }
-                    B.begin_line = no;
-                    st = CDD_HEADER;
-                }
-            }
-            else if (st == CDD_BEFORE && !seen_line && B.kind < 0
-                     && B.lin_line == 0)
-                ;   /* a name line, as lrs writes */
-            else
-                status = _wc_located_quoting(s, no, t[0].col, st == CDD_BEFORE
-                                             ? "unexpected '%s' before 'begin'"
-                                             : "unexpected '%s' after 'end'",
-                                             text + t[0].a, t[0].b - t[0].a);
+            status = cdd_outside(&B, &st, F, s, no, start, end, t, n,
+                                 seen_line);
             seen_line = 1;
             break;
         case CDD_HEADER:
@@ -482,41 +518,21 @@ _wc_foreign_parse_cdd(wc_foreign_t F, const _wc_source * s)
                 st = CDD_ROWS;
             break;
         case CDD_ROWS:
-            if (tok_is(s, t, "end"))
-            {
-                if (n > 1)
-                    status = _wc_located_quoting(s, no, t[1].col, "unexpected "
-                                                 "'%s' after 'end'",
-                                                 text + t[1].a,
-                                                 t[1].b - t[1].a);
-                else
-                    status = cdd_finish(F, &B, s, no, t[0].col);
-                st = CDD_AFTER;
-            }
-            else
+            if (!tok_is(s, t, "end"))
                 status = cdd_row(&B, s, no, text, start, end);
+            else if (n > 1)
+                status = _wc_located_quoting(s, no, t[1].col, "unexpected "
+                                             "'%s' after 'end'",
+                                             text + t[1].a, t[1].b - t[1].a);
+            else
+                status = cdd_finish(F, &B, s, no, t[0].col);
+            if (tok_is(s, t, "end"))
+                st = CDD_AFTER;
             break;
         }
     }
     if (status == WC_OK)
-    {
-        /* the position after the last byte */
-        if (len > 0 && text[len - 1] == '\n')
-        {
-            no++;
-            last_col = 1;
-        }
-        if (no == 0)
-            no = 1;
-        if (st == CDD_HEADER || st == CDD_ROWS)
-            status = _wc_located(s, no, last_col, "end of file before 'end'");
-        else if (st == CDD_BEFORE || B.kind >= 0 || B.lin_line != 0)
-            status = _wc_located(s, no, last_col, F->nreps == 0 && B.kind < 0
-                                 && B.lin_line == 0
-                                 ? "no cone here: expected a cdd file "
-                                 "(H- or V-representation, 'begin' .. 'end') "
-                                 "or a JSON cone" : "end of file before 'begin'");
-    }
+        status = cdd_end_of_file(&B, st, F, s, no, last_col);
     block_clear(&B);
     return status;
 }
