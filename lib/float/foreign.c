@@ -142,8 +142,8 @@ _wc_located(const _wc_source * s, long line, long col, const char * fmt, ...)
 
 /* _wc_located() with a message quoting t[0..n) (fmt has one %s).  */
 int
-_wc_located_quoting(const _wc_source * s, long line, long col, const char * fmt,
-                    const char * t, size_t n)
+_wc_located_quoting(const _wc_source * s, long line, long col,
+                    const char * fmt, const char * t, size_t n)
 {
     char * q = _wc_json_show(t, n);
 
@@ -155,18 +155,18 @@ _wc_located_quoting(const _wc_source * s, long line, long col, const char * fmt,
     return WC_EINPUT;
 }
 
-/* An exact number spelt t[0..n), _wc_located at (line, col) on error.  */
+/* An exact number spelt t[0..n), located at (line, col) on error.  */
 int
-_wc_foreign_number(fmpq_t x, const _wc_source * s, const char * t, size_t n, long line,
-                   long col)
+_wc_foreign_number(fmpq_t x, const _wc_source * s, const char * t,
+                   size_t n, long line, long col)
 {
     size_t i, e = n;
     long ex = 0;
     int status;
 
     if (n > WC_FOREIGN_MAX_CHARS)
-        return _wc_located(s, line, col, "number too long (over %d characters)",
-                           WC_FOREIGN_MAX_CHARS);
+        return _wc_located(s, line, col, "number too long (over %d "
+                           "characters)", WC_FOREIGN_MAX_CHARS);
     for (i = 0; i < n; i++)
         if (t[i] == 'e' || t[i] == 'E')
             e = i + 1;
@@ -174,8 +174,9 @@ _wc_foreign_number(fmpq_t x, const _wc_source * s, const char * t, size_t n, lon
         e++;
     for (i = e; i < n && t[i] >= '0' && t[i] <= '9'; i++)
         if ((ex = 10 * ex + (t[i] - '0')) > WC_FOREIGN_MAX_EXPONENT)
-            return _wc_located_quoting(s, line, col, "exponent out of range in "
-                                       "'%s' (at most 1000 here)", t, n);
+            return _wc_located_quoting(s, line, col, "exponent out of "
+                                       "range in '%s' (at most 1000 here)",
+                                       t, n);
     status = wc_parse_number(x, t, n, s->err);
 
     if (status == WC_EINPUT)
@@ -212,8 +213,8 @@ at_node(const _wc_source * s, const wc_json_node * v, const char * fmt, ...)
 
 /* The vectors under key in cone object o, if the key is there.  */
 static int
-json_vectors(_wc_rowbuf * out, const wc_json_node ** present, const _wc_source * s,
-             const wc_json_node * o, const char * key)
+json_vectors(_wc_rowbuf * out, const wc_json_node ** present,
+             const _wc_source * s, const wc_json_node * o, const char * key)
 {
     const wc_json_node * a = _wc_json_object_get(o, key);
     fmpq * x = NULL;
@@ -244,7 +245,8 @@ json_vectors(_wc_rowbuf * out, const wc_json_node ** present, const _wc_source *
             const wc_json_node * v = e->items + j;
 
             if (v->type == WC_JSON_NUMBER || v->type == WC_JSON_STRING)
-                status = _wc_foreign_number(x + j, s, v->text, v->len, v->line, v->col);
+                status = _wc_foreign_number(x + j, s, v->text, v->len,
+                                            v->line, v->col);
             else
                 status = at_node(s, v, "expected a number, found %s",
                                  _wc_json_type_name(v->type));
@@ -342,11 +344,13 @@ parse_json(wc_foreign_t F, const _wc_source * s)
         goto cleanup;
     }
     if (rays != NULL || lines != NULL)
-        _wc_foreign_add_rep(F, WC_REP_GENERATORS, rays != NULL ? rays->line : lines->line,
-                            0, &R, &L);
+        _wc_foreign_add_rep(F, WC_REP_GENERATORS,
+                            rays != NULL ? rays->line : lines->line, 0, &R,
+                            &L);
     if (ineqs != NULL || eqs != NULL)
         _wc_foreign_add_rep(F, WC_REP_INEQUALITIES,
-                            ineqs != NULL ? ineqs->line : eqs->line, 0, &H, &E);
+                            ineqs != NULL ? ineqs->line : eqs->line, 0, &H,
+                            &E);
 
 cleanup:
     _wc_rowbuf_clear(&R);

@@ -166,7 +166,8 @@ cdd_linearity(cdd_block * B, const _wc_source * s, long no, const char * text,
     if (n < 2 || (k = tok_count(s, t + 1, WC_FOREIGN_MAX_ROWS)) < 0)
     {
         status = n < 2 ? _wc_located(s, no, (long) (end - start) + 1,
-                                     "'linearity' needs a count and row numbers")
+                                     "'linearity' needs a count and row "
+                                     "numbers")
             : _wc_located_quoting(s, no, t[1].col, "bad linearity count '%s'",
                                   text + t[1].a, t[1].b - t[1].a);
         goto cleanup;
@@ -175,8 +176,8 @@ cdd_linearity(cdd_block * B, const _wc_source * s, long no, const char * text,
     {
         status = _wc_located(s, no, n - 2 > k ? t[2 + k].col
                              : (long) (end - start) + 1,
-                             "'linearity %lld' needs %lld row numbers, found %ld",
-                             k, k, (long) (n - 2));
+                             "'linearity %lld' needs %lld row numbers, "
+                             "found %ld", k, k, (long) (n - 2));
         goto cleanup;
     }
     B->lin_line = no;
@@ -207,8 +208,8 @@ cdd_linearity(cdd_block * B, const _wc_source * s, long no, const char * text,
 
             for (j = k - 1; j >= 0 && B->lin_raw[j] != B->lin[i]; j--)
                 ;
-            status = _wc_located(s, no, B->lin_col[j], "row %lld appears twice "
-                                 "in 'linearity'", B->lin[i]);
+            status = _wc_located(s, no, B->lin_col[j], "row %lld appears "
+                                 "twice in 'linearity'", B->lin[i]);
             goto cleanup;
         }
 
@@ -252,9 +253,9 @@ cdd_header(cdd_block * B, const _wc_source * s, long no, const char * text,
                                    text + t[2].a, t[2].b - t[2].a);
     for (i = 0; i < B->nlin; i++)
         if (B->lin_raw[i] > B->m)
-            return _wc_located(s, B->lin_line, B->lin_col[i], "linearity row "
-                               "%lld is beyond the last row of the block (%lld)",
-                               B->lin_raw[i], B->m);
+            return _wc_located(s, B->lin_line, B->lin_col[i], "linearity "
+                               "row %lld is beyond the last row of the block "
+                               "(%lld)", B->lin_raw[i], B->m);
     B->header_line = no;
     return WC_OK;
 }
@@ -279,14 +280,15 @@ cdd_row(cdd_block * B, const _wc_source * s, long no, const char * text,
     }
     if (n != 4)
     {
-        status = _wc_located(s, no, n > 4 ? t[4].col : (long) (end - start) + 1,
+        status = _wc_located(s, no,
+                             n > 4 ? t[4].col : (long) (end - start) + 1,
                              "a row has 4 numbers, found %ld", (long) n);
         goto cleanup;
     }
     for (i = 0; i < 4; i++)
     {
-        status = _wc_foreign_number(x + i, s, text + t[i].a, t[i].b - t[i].a, no,
-                                    t[i].col);
+        status = _wc_foreign_number(x + i, s, text + t[i].a,
+                                    t[i].b - t[i].a, no, t[i].col);
         if (status != WC_OK)
             goto cleanup;
         if (B->integer && !fmpz_is_one(fmpq_denref(x + i)))
@@ -312,9 +314,9 @@ cdd_row(cdd_block * B, const _wc_source * s, long no, const char * text,
         {
             char * c = fmpq_get_str(NULL, 10, x);
 
-            status = _wc_located(s, no, t[0].col, "not a cone: the constant "
-                                 "term b is %s; the rows 'b -A' (b - A g >= 0) "
-                                 "of a cone have b = 0", c);
+            status = _wc_located(s, no, t[0].col, "not a cone: the "
+                                 "constant term b is %s; the rows 'b -A' "
+                                 "(b - A g >= 0) of a cone have b = 0", c);
             flint_free(c);
             goto cleanup;
         }
@@ -330,20 +332,20 @@ cdd_row(cdd_block * B, const _wc_source * s, long no, const char * text,
     {
         if (fmpq_sgn(x) < 0)
         {
-            status = _wc_located(s, no, t[0].col, "a V-representation row starts "
-                                 "with 1 (a point) or 0 (a ray), not a negative "
-                                 "number");
+            status = _wc_located(s, no, t[0].col, "a V-representation row "
+                                 "starts with 1 (a point) or 0 (a ray), not a "
+                                 "negative number");
             goto cleanup;
         }
         if (fmpq_sgn(x) > 0)
         {
             if (!zero)
-                status = _wc_located(s, no, t[1].col, "not a cone: a point other "
-                                     "than the origin (a cone's one point is its "
-                                     "apex, '1 0 0 0')");
+                status = _wc_located(s, no, t[1].col, "not a cone: a point "
+                                     "other than the origin (a cone's one "
+                                     "point is its apex, '1 0 0 0')");
             else if (lin)
-                status = _wc_located(s, no, t[0].col, "linearity row %lld is a "
-                                     "point, not a line", row);
+                status = _wc_located(s, no, t[0].col, "linearity row %lld "
+                                     "is a point, not a line", row);
             goto cleanup;
         }
         if (!zero)
@@ -360,13 +362,13 @@ cdd_finish(wc_foreign_t F, cdd_block * B, const _wc_source * s, long no,
            long col)
 {
     if (B->nread < B->m)
-        return _wc_located(s, no, col, "found %lld row%s before 'end', but the "
-                           "header (line %ld) announces %lld", B->nread,
+        return _wc_located(s, no, col, "found %lld row%s before 'end', but "
+                           "the header (line %ld) announces %lld", B->nread,
                            B->nread == 1 ? "" : "s", B->header_line, B->m);
     if (B->kind == WC_REP_GENERATORS && B->m == 0)
         B->empty = 1;
-    _wc_foreign_add_rep(F, (wc_rep_kind) B->kind, B->kind_line, B->empty, &B->rows,
-                        &B->lin_rows);
+    _wc_foreign_add_rep(F, (wc_rep_kind) B->kind, B->kind_line, B->empty,
+                        &B->rows, &B->lin_rows);
     block_clear(B);
     return WC_OK;
 }
