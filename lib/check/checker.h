@@ -19,6 +19,7 @@
 
 #include "core/error.h"
 #include "core/json.h"
+#include "core/text.h"
 
 #ifdef __GNUC__
 #define WC_CHECK_PRINTF(f, a) __attribute__((format(printf, f, a)))

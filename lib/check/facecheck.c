@@ -15,7 +15,7 @@
 static void
 put_face(wc_check_text * b, size_t k, const char * sign, int rotation)
 {
-    char * shown = _wc_json_show(sign, strlen(sign));
+    char * shown = _wc_show(sign, strlen(sign), 1);
 
     if (shown == NULL)
     {

@@ -103,9 +103,6 @@ const wc_json_node * _wc_json_object_value(const wc_json_node * o,
    "a number", "a string", "an array", "an object".  */
 const char * _wc_json_type_name(wc_json_type t);
 
-/* The name callers outside core know _wc_show(s, len, 1) by: a printable
-   copy of s[0..len) for a message, cut at a UTF-8 character boundary.  */
-#define _wc_json_show(s, len) _wc_show((s), (len), 1)
 
 #ifdef __cplusplus
 }

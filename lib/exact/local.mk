@@ -25,4 +25,5 @@ noinst_HEADERS += \
 	lib/exact/hull3.h \
 	lib/exact/arrangement.h \
 	lib/exact/incidence.h \
-	lib/exact/box.h
+	lib/exact/box.h \
+	lib/exact/cddconv.inc

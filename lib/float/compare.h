@@ -28,8 +28,6 @@
 #ifndef WC_COMPARE_H
 #define WC_COMPARE_H
 
-#include <stdio.h>
-
 #include <flint/fmpq_mat.h>
 
 #include "core/error.h"
@@ -64,12 +62,13 @@ double wc_angle_to_cone(const fmpq * v, const wc_cone_t C);
    a unit vector of cl A to cl B (0 when cl A is {0}; INFINITY when cl B
    is {0} but cl A is not).  witness (3 doubles, may be NULL) receives a
    unit vector of cl A where it is attained (zeros when cl A is {0}).  Not
-   in general at an extreme ray of A: see compare.c.  Exact but for the
+   in general at an extreme ray of A: see hausdorff.c.  Exact but for the
    final float conversion, except where part of cl A lies at pi/2 or more
    from cl B: there the value is found among finitely many candidates in
    doubles, and when cl B has more than 48 extreme rays it is only a lower
-   bound (still at least pi/2).  Both cones must be nonempty and in R^3.  Returns WC_OK, WC_EINPUT when a cone is empty or
-   not in R^3, or WC_EINTERNAL.  */
+   bound (still at least pi/2).  Both cones must be nonempty and in R^3.
+   Returns WC_OK, WC_EINPUT when a cone is empty or not in R^3, or
+   WC_EINTERNAL.  */
 int wc_cone_directed_angle(double * dist, double * witness,
                            const wc_cone_t A, const wc_cone_t B,
                            wc_error_t err);
@@ -241,12 +240,7 @@ void wc_comparison_clear(wc_comparison_t R);
 int wc_compare(wc_comparison_t R, const wc_cone_t W, const char * mode,
                const wc_foreign_t F, double tol, wc_error_t err);
 
-/* The report: text for people (json = 0) or one JSON object and a
-   newline.  problem, mode and file name the inputs.  Returns WC_OK or
-   WC_EINTERNAL when the stream reports an error.  */
-int wc_comparison_fprint(FILE * out, const wc_comparison_t R,
-                         const wc_cone_t W, const char * problem,
-                         const char * mode, const char * file, int json);
+/* The report, wc_comparison_fprint, is in io/compareprint.h.  */
 
 #ifdef __cplusplus
 }

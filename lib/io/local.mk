@@ -3,10 +3,16 @@
 lib_libwc_la_SOURCES += \
 	lib/io/printutil.c \
 	lib/io/print.c \
+	lib/io/cddwrite.c \
 	lib/io/stabprint.c \
-	lib/io/planprint.c
+	lib/io/planprint.c \
+	lib/io/fconeprint.c \
+	lib/io/compareprint.c
 wciodir = $(pkgincludedir)/io
 wcio_HEADERS = \
-	lib/io/print.h
+	lib/io/print.h \
+	lib/io/fconeprint.h \
+	lib/io/compareprint.h
 noinst_HEADERS += \
-	lib/io/printutil.h
+	lib/io/printutil.h \
+	lib/io/cddwrite.h

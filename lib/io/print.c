@@ -13,8 +13,6 @@
 #include "io/print.h"
 #include "io/printutil.h"
 
-/* The cdd writer below says done().  */
-#define done(out) _wc_fprint_done(out)
 
 static void
 json_fmpz(FILE * out, const fmpz_t x)
@@ -158,118 +156,6 @@ wc_cone_fprint_text(FILE * out, const wc_cone_t C, const char * indent)
                 F->included ? "included" : "excluded");
     }
     return _wc_fprint_done(out);
-}
-
-static void
-cdd_row(FILE * out, const char * lead, const fmpz * v, slong d, int sign)
-{
-    slong j;
-    fmpz_t t;
-
-    fmpz_init(t);
-    fputs(lead, out);
-    for (j = 0; j < d; j++)
-    {
-        char * s;
-
-        fmpz_mul_si(t, v + j, sign);
-        s = fmpz_get_str(NULL, 10, t);
-        fprintf(out, " %s", s);
-        flint_free(s);
-    }
-    putc('\n', out);
-    fmpz_clear(t);
-}
-
-static void
-cdd_linearity(FILE * out, slong first, slong count)
-{
-    slong i;
-
-    if (count == 0)
-        return;
-    fprintf(out, "linearity %ld", (long) count);
-    for (i = 0; i < count; i++)
-        fprintf(out, " %ld", (long) (first + i));
-    putc('\n', out);
-}
-
-int
-wc_cone_fprint_cdd(FILE * out, const wc_cone_t C, const char * title,
-                   int which)
-{
-    slong d = C->d, f, i, m, q, k, l;
-
-    if (title != NULL)
-        fprintf(out, "* %s\n", title);
-    if (C->empty)
-    {
-        fputs("* the cone is empty\n", out);
-        if (which & 1)
-        {
-            /* -1 >= 0: no point satisfies it.  */
-            fprintf(out, "H-representation\nbegin\n 1 %ld rational\n -1",
-                    (long) d + 1);
-            for (i = 0; i < d; i++)
-                fputs(" 0", out);
-            fputs("\nend\n", out);
-        }
-        if (which & 2)
-            fprintf(out, "V-representation\nbegin\n 0 %ld rational\nend\n",
-                    (long) d + 1);
-        return done(out);
-    }
-    m = fmpz_mat_nrows(C->ineqs);
-    q = fmpz_mat_nrows(C->eqs);
-    k = fmpz_mat_nrows(C->rays);
-    l = fmpz_mat_nrows(C->lines);
-    if (wc_cone_excluded_faces(C) == 0)
-        fputs("* the cone is closed: it equals the polyhedron below\n", out);
-    else
-    {
-        fputs("* the cone is NOT closed: below is its closure; these faces of the\n"
-              "* closure are not in the cone (rays numbered 0.. in V-representation\n"
-              "* order after the apex row):\n", out);
-        for (f = 0; f < C->nfaces; f++)
-        {
-            const wc_face_struct * F = C->faces + f;
-
-            if (F->included)
-                continue;
-            fprintf(out, "*   excluded face of dim %ld, rays {", (long) F->dim);
-            for (i = 0; i < F->nrays; i++)
-                fprintf(out, "%s%ld", i ? " " : "", (long) F->rays[i]);
-            fputs("}\n", out);
-        }
-    }
-    if (which & 1)
-    {
-        fputs("H-representation\n", out);
-        cdd_linearity(out, m + 1, q);
-        fprintf(out, "begin\n %ld %ld rational\n", (long) (m + q), (long) d + 1);
-        for (i = 0; i < m; i++)
-            cdd_row(out, " 0", WC_ROW(C->ineqs, i), d, -1);
-        for (i = 0; i < q; i++)
-            cdd_row(out, " 0", WC_ROW(C->eqs, i), d, 1);
-        fputs("end\n", out);
-    }
-    if (which & 2)
-    {
-        fputs("V-representation\n", out);
-        cdd_linearity(out, k + 2, l);
-        fprintf(out, "begin\n %ld %ld rational\n", (long) (1 + k + l),
-                (long) d + 1);
-        fputs(" 1", out);
-        for (i = 0; i < d; i++)
-            fputs(" 0", out);
-        putc('\n', out);
-        for (i = 0; i < k; i++)
-            cdd_row(out, " 0", WC_ROW(C->rays, i), d, 1);
-        for (i = 0; i < l; i++)
-            cdd_row(out, " 0", WC_ROW(C->lines, i), d, 1);
-        fputs("end\n", out);
-    }
-    return done(out);
 }
 
 int
