@@ -1,0 +1,215 @@
+/* cli.c -- messages, inputs and output for every command of the program.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.  */
+
+#include <config.h>
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli.h"
+
+void
+cli_version(void)
+{
+    printf(PROG " %s\n"
+           "GMP %s, FLINT %s, cddlib %s\n"
+           "Copyright (C) 2026 the wrenchcone authors.\n"
+           "License GPLv2+: GNU GPL version 2 or later.\n"
+           "This is free software: you are free to change and redistribute it.\n"
+           "There is NO WARRANTY, to the extent permitted by law.\n",
+           wc_version(), wc_gmp_version(), wc_flint_version(),
+           wc_cdd_version());
+}
+
+int
+cli_report(const wc_error_t err, int status)
+{
+    char * s = wc_error_format(err);
+
+    fprintf(stderr, PROG ": %s\n", s != NULL ? s : "out of memory");
+    free(s);
+    return status;
+}
+
+int
+cli_usage_error(const char * cmd, const char * fmt, const char * arg)
+{
+    fputs(PROG ": ", stderr);
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\nTry '" PROG "%s%s --help' for more information.\n",
+            cmd ? " " : "", cmd ? cmd : "");
+    return WC_EUSAGE;
+}
+
+const char *
+cli_input_name(const char * path)
+{
+    return strcmp(path, "-") == 0 ? "<stdin>" : path;
+}
+
+/* Read the whole of f into a malloc'd buffer, at most max bytes.  */
+static int
+read_stream(char ** text, size_t * len, FILE * f, const char * path,
+            size_t max, wc_error_t err)
+{
+    size_t alloc = 4096, n = 0, r;
+    char * buf = malloc(alloc);
+    int status = WC_OK;
+
+    while (buf != NULL && (r = fread(buf + n, 1, alloc - n, f)) > 0)
+    {
+        n += r;
+        if (n > max)
+        {
+            status = wc_error_set(err, WC_EINPUT, path, 0, 0,
+                                  "file too large (over %lu bytes)",
+                                  (unsigned long) max);
+            break;
+        }
+        if (n == alloc)
+        {
+            char * p = realloc(buf, alloc *= 2);
+
+            if (p == NULL)
+                free(buf);
+            buf = p;
+        }
+    }
+    if (status != WC_OK)
+        ;
+    else if (buf == NULL)
+        status = wc_error_set(err, WC_EINTERNAL, path, 0, 0, "out of memory");
+    else if (ferror(f))
+        /* A directory is a wrong argument; anything else is an I/O
+           failure.  */
+        status = wc_error_set(err, errno == EISDIR ? WC_EINPUT : WC_EINTERNAL,
+                              path, 0, 0, "read error: %s", strerror(errno));
+    if (status != WC_OK)
+    {
+        free(buf);
+        return status;
+    }
+    *text = buf;
+    *len = n;
+    return WC_OK;
+}
+
+/* path "-" is stdin.  */
+int
+cli_read_all(char ** text, size_t * len, const char * path, size_t max,
+             wc_error_t err)
+{
+    FILE * f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
+    int status;
+
+    if (f == NULL)
+        return wc_error_set(err, WC_EINPUT, path, 0, 0, "cannot open: %s",
+                            strerror(errno));
+    status = read_stream(text, len, f, path, max, err);
+    if (f != stdin)
+        fclose(f);
+    return status;
+}
+
+int
+cli_load_problem(wc_problem_t P, const char * path, wc_error_t err)
+{
+    char * text = NULL;
+    size_t len = 0;
+    int status = cli_read_all(&text, &len, path, CLI_MAX_PROBLEM_BYTES, err);
+
+    if (status == WC_OK)
+        status = wc_problem_parse(P, text, len, cli_input_name(path), err);
+    free(text);
+    return status;
+}
+
+int
+cli_parse_format(cli_format * f, const char * s, const char * cmd,
+                 int allow_cdd)
+{
+    if (strcmp(s, "text") == 0)
+        *f = FMT_TEXT;
+    else if (strcmp(s, "json") == 0)
+        *f = FMT_JSON;
+    else if (allow_cdd && strcmp(s, "cdd") == 0)
+        *f = FMT_CDD;
+    else if (allow_cdd && strcmp(s, "ine") == 0)
+        *f = FMT_INE;
+    else if (allow_cdd && strcmp(s, "ext") == 0)
+        *f = FMT_EXT;
+    else
+    {
+        cli_usage_error(cmd, allow_cdd ? "unknown format '%s' (text, json, "
+                        "cdd, ine or ext)" : "unknown format '%s' (text or "
+                        "json)", s);
+        return 0;
+    }
+    return 1;
+}
+
+int
+cli_parse_numbers(fmpq * v, char ** args, slong k, const char * what,
+                  wc_error_t err)
+{
+    slong i, col = 1;
+
+    for (i = 0; i < k; i++)
+    {
+        if (wc_parse_number(v + i, args[i], strlen(args[i]), err) != WC_OK)
+        {
+            char * why = wc_error_format(err);
+            int st = wc_error_set(err, WC_EINPUT, what, 1, col, "%s",
+                                  why != NULL ? why : "bad number");
+
+            free(why);
+            return st;
+        }
+        col += strlen(args[i]) + 1;
+    }
+    return WC_OK;
+}
+
+int
+cli_finish_output(void)
+{
+    if (fflush(stdout) != 0 || ferror(stdout))
+    {
+        fprintf(stderr, PROG ": write error: %s\n", strerror(errno));
+        return WC_EINTERNAL;
+    }
+    return WC_OK;
+}
+
+/* Only a file this run created is ever removed -- never a device or
+   someone's file.  */
+int
+cli_write_certificate(const char * path, int (*put)(FILE *, const void *),
+                      const void * data)
+{
+    struct stat st;
+    int existed = stat(path, &st) == 0;
+    FILE * f = fopen(path, "w");
+    int bad = f == NULL;
+
+    if (f != NULL)
+    {
+        bad = put(f, data) != WC_OK;
+        bad |= fclose(f) != 0;
+        if (bad && !existed)
+            remove(path);
+    }
+    if (bad)
+    {
+        fprintf(stderr, PROG ": %s: cannot write the certificate: %s\n",
+                path, strerror(errno));
+        return WC_EINTERNAL;
+    }
+    return WC_OK;
+}

@@ -1,0 +1,129 @@
+/* cli.h -- what the commands of the program share: the command table's
+   entry, reading inputs, reporting errors, options, finishing output.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Results go to stdout, only after the whole answer is computed;
+   diagnostics go to stderr as "wrenchcone: FILE:LINE:COL: message".
+   Exit status: 0 success, 1 bad input, 2 bad usage, 3 internal or I/O
+   failure, 4 a check found a disagreement (SPEC 4).  */
+
+#ifndef WC_CLI_H
+#define WC_CLI_H
+
+#include <getopt.h>
+#include <stdio.h>
+
+#include "wrenchcone.h"
+
+#define PROG "wrenchcone"
+
+typedef struct cli_command cli_command;
+
+/* One command of the program.  */
+struct cli_command
+{
+    const char * name;          /* dispatched by this full name only */
+    int (*run)(const cli_command * self, int argc, char ** argv);
+    const char * usage;         /* its --help text */
+    const struct option * options;  /* its own options, ending with a NULL
+                                       name; --help and --version are
+                                       everyone's and not listed */
+    unsigned flags;
+};
+
+/* The flags of a command.  CLI_SHARED: the command knows the options of
+   every other CLI_SHARED command, and refuses them as "does not apply
+   here" rather than as unknown (so an abbreviation is read against all
+   of them).  CLI_OPERANDS_LAST: operands may be negative numbers, read
+   as operands, not options (see cli_operands_last).  */
+enum { CLI_SHARED = 1, CLI_OPERANDS_LAST = 2 };
+
+/* An option code with this bit takes one value FX,FY,TAU that may also
+   be written as three arguments, --NAME FX FY TAU (CLI_OPERANDS_LAST
+   commands only).  */
+#define CLI_WRENCH_VALUE 0x1000
+
+/* The program's commands, ending with a NULL name (wrenchcone.c).  A
+   NULL run: the command is planned but not implemented.  */
+extern const cli_command cli_commands[];
+
+/* Inputs larger than these are refused before they are parsed: a problem
+   of a million fixels is far below the first, and a certificate carries
+   at most two rows per fixel.  */
+#define CLI_MAX_PROBLEM_BYTES ((size_t) 256 << 20)
+#define CLI_MAX_CERTIFICATE_BYTES ((size_t) 64 << 20)
+
+typedef enum { FMT_TEXT, FMT_JSON, FMT_CDD, FMT_INE, FMT_EXT } cli_format;
+
+/* --- cli.c: messages, inputs, output --- */
+
+void cli_version(void);
+
+/* Report err on stderr; returns status.  */
+int cli_report(const wc_error_t err, int status);
+
+/* "wrenchcone: " fmt (with arg), then where to find help (the command's
+   when cmd is not NULL); returns WC_EUSAGE.  */
+int cli_usage_error(const char * cmd, const char * fmt, const char * arg);
+
+/* The name under which path is reported: "-" is "<stdin>".  */
+const char * cli_input_name(const char * path);
+
+int cli_read_all(char ** text, size_t * len, const char * path, size_t max,
+                 wc_error_t err);
+int cli_load_problem(wc_problem_t P, const char * path, wc_error_t err);
+
+/* --format's value: 1 when s names a format (cdd, ine and ext only with
+   allow_cdd), else 0 after a usage error for command cmd.  */
+int cli_parse_format(cli_format * f, const char * s, const char * cmd,
+                     int allow_cdd);
+
+/* The exact numbers args[0..k) into v; a bad one is an input error in
+   "what" at its column in the operands joined by single spaces.  */
+int cli_parse_numbers(fmpq * v, char ** args, slong k, const char * what,
+                      wc_error_t err);
+
+/* Flush stdout; a failed write is reported, and is an I/O failure.  */
+int cli_finish_output(void);
+
+/* Write a certificate file with put(f, data); never leaves a partial file
+   this run created.  */
+int cli_write_certificate(const char * path,
+                          int (*put)(FILE *, const void *),
+                          const void * data);
+
+/* --- cli-options.c: options and operands --- */
+
+#define CLI_MAX_OPTIONS 64
+
+/* Reading a command's options with getopt_long.  */
+typedef struct
+{
+    const cli_command * cmd;
+    struct option table[CLI_MAX_OPTIONS + 1];
+    int status;         /* the exit status, once CLI_EXIT is returned */
+}
+cli_options;
+
+enum { CLI_DONE = -1, CLI_EXIT = -2 };
+
+void cli_options_init(cli_options * p, const cli_command * cmd);
+
+/* The next option's code from the command's table, its value in optarg;
+   CLI_DONE after the last one (the operands are argv[optind..]), or
+   CLI_EXIT when the command is over with status p->status: --help and
+   --version printed, or a usage error reported.  */
+int cli_option(cli_options * p, int argc, char ** argv);
+
+/* argv with the options first, then "--", then the operands, so that
+   "-1" is an operand; a CLI_WRENCH_VALUE option followed by three
+   arguments becomes one --NAME=FX,FY,TAU, malloc'd in *extra.  Returns a
+   malloc'd vector of argv's strings (and *extra), or NULL when out of
+   memory.  */
+char ** cli_operands_last(int * pargc, char ** argv,
+                          const struct option * opts, char ** extra);
+
+#endif

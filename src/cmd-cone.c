@@ -1,0 +1,249 @@
+/* cmd-cone.c -- wrenchcone cone: the exact wrench cone of one contact
+   mode, or the paper's route in doubles.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.  */
+
+#include <config.h>
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "commands.h"
+
+const char cmd_cone_usage[] =
+    "Usage: " PROG " cone [OPTIONS] PROBLEM MODE\n"
+    "Print W(MODE), the exact cone of external wrenches (fx, fy, torque)\n"
+    "consistent with MODE, in canonical form: closure facets, rays, and every\n"
+    "face of the closure with whether it belongs to the cone.\n"
+    "\n"
+    "MODE has one letter per fixel, in file order (paper Table 2):\n"
+    "  touching fixels: s separate, l slide left, r slide right, n roll,\n"
+    "                   m maintain contact;\n"
+    "  near fixels:     s separate, a approach, u unconstrained.\n"
+    "\n"
+    "Options:\n"
+    "  --format=FMT     text (default), json (SPEC 4.1), cdd (cddlib .ine then\n"
+    "                   .ext with rationals), ine, or ext\n"
+    "  --method=METHOD  direct (default; Minkowski sum in R^3) or paper (the\n"
+    "                   paper's Section 5 route); both print the same bytes\n"
+    "  --trace          also print every intermediate matrix of the route\n"
+    "  --arith=ARITH    exact (default) or double: the paper route in C doubles\n"
+    "                   with cddlib's double-precision build, the floating-point\n"
+    "                   baseline (needs --method=paper, no --trace; unit-length\n"
+    "                   vectors, a strict flag per facet and ray instead of faces)\n"
+    "  -h, --help       print this help and exit\n"
+    "  -V, --version    print versions and exit\n";
+
+enum { OPT_FORMAT = 256, OPT_METHOD, OPT_TRACE, OPT_ARITH };
+
+const struct option cmd_cone_options[] = {
+    { "format", required_argument, NULL, OPT_FORMAT },
+    { "method", required_argument, NULL, OPT_METHOD },
+    { "trace", no_argument, NULL, OPT_TRACE },
+    { "arith", required_argument, NULL, OPT_ARITH },
+    { NULL, 0, NULL, 0 }
+};
+
+typedef struct
+{
+    cli_format fmt;
+    wc_method method;
+    int trace;
+    int arith_double;   /* --arith=double */
+}
+cone_options;
+
+/* -1 to go on, or the exit status.  */
+static int
+parse(cone_options * o, const cli_command * self, int argc, char ** argv)
+{
+    cli_options p;
+    int c;
+
+    o->fmt = FMT_TEXT;
+    o->method = WC_METHOD_DIRECT;
+    o->trace = 0;
+    o->arith_double = 0;
+    cli_options_init(&p, self);
+    while ((c = cli_option(&p, argc, argv)) >= 0)
+        switch (c)
+        {
+        case OPT_FORMAT:
+            if (!cli_parse_format(&o->fmt, optarg, "cone", 1))
+                return WC_EUSAGE;
+            break;
+        case OPT_METHOD:
+            if (strcmp(optarg, "direct") == 0)
+                o->method = WC_METHOD_DIRECT;
+            else if (strcmp(optarg, "paper") == 0)
+                o->method = WC_METHOD_PAPER;
+            else
+                return cli_usage_error("cone", "unknown method '%s' (direct "
+                                       "or paper)", optarg);
+            break;
+        case OPT_TRACE:
+            o->trace = 1;
+            break;
+        case OPT_ARITH:
+            if (strcmp(optarg, "exact") != 0 && strcmp(optarg, "double") != 0)
+                return cli_usage_error("cone", "unknown arithmetic '%s' "
+                                       "(exact or double)", optarg);
+            o->arith_double = optarg[0] == 'd';
+            break;
+        }
+    return c == CLI_EXIT ? p.status : -1;
+}
+
+/* --method=paper --arith=double: the float baseline, printed by
+   floatcone.c.  */
+static int
+cone_double(cli_format fmt, const char * path, const char * mode)
+{
+    wc_problem_t P;
+    wc_error_t err;
+    wc_fcone_t W;
+    int status;
+
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_fcone_init(W, 3);
+    status = cli_load_problem(P, path, err);
+    if (status == WC_OK)
+        status = wc_wrench_cone_paper_double(W, P, mode, WC_FCONE_EPS, err);
+    if (status != WC_OK)
+        cli_report(err, status);
+    else if (fmt == FMT_TEXT)
+    {
+        printf("W(%s): wrench cone of mode %s\n", mode, mode);
+        wc_fcone_fprint(stdout, W, WC_FCONE_TEXT);
+    }
+    else if (fmt == FMT_JSON)
+    {
+        fputs("{\"mode\": ", stdout);
+        wc_fprint_json_string(stdout, mode);
+        fputs(", \"cone\": ", stdout);
+        wc_fcone_fprint(stdout, W, WC_FCONE_JSON);
+        fputs("}\n", stdout);
+    }
+    else
+    {
+        printf("* wrenchcone: W(%s), the wrench cone of mode %s\n", mode, mode);
+        wc_fcone_fprint(stdout, W, fmt == FMT_INE ? WC_FCONE_INE
+                        : fmt == FMT_EXT ? WC_FCONE_EXT : WC_FCONE_CDD);
+    }
+    if (status == WC_OK)
+        status = cli_finish_output();
+    wc_fcone_clear(W);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}
+
+/* Print the cone (and its trace); title: the cdd formats' title.  */
+static void
+print_cone(const cone_options * o, const char * mode, const wc_cone_t W,
+           const wc_trace_t T, const char * title)
+{
+    switch (o->fmt)
+    {
+    case FMT_TEXT:
+        if (o->trace)
+        {
+            printf("trace (%s route):\n", o->method == WC_METHOD_PAPER
+                   ? "paper, Section 5" : "direct, M V_x + (-J) D_x");
+            wc_trace_fprint_text(stdout, T, "  ");
+            putchar('\n');
+        }
+        printf("W(%s): wrench cone of mode %s\n", mode, mode);
+        wc_cone_fprint_text(stdout, W, "  ");
+        break;
+    case FMT_JSON:
+        fputs("{\"mode\": ", stdout);
+        wc_fprint_json_string(stdout, mode);
+        fputs(", \"cone\": ", stdout);
+        wc_cone_fprint_json(stdout, W);
+        if (o->trace)
+        {
+            fprintf(stdout, ", \"method\": \"%s\", \"trace\": ",
+                    o->method == WC_METHOD_PAPER ? "paper" : "direct");
+            wc_trace_fprint_json(stdout, T);
+        }
+        fputs("}\n", stdout);
+        break;
+    default:
+        if (o->trace)
+            wc_trace_fprint_text(stdout, T, "* ");
+        wc_cone_fprint_cdd(stdout, W, title, o->fmt == FMT_INE ? 1
+                           : o->fmt == FMT_EXT ? 2 : 3);
+        break;
+    }
+}
+
+/* The title of the cdd formats, malloc'd.  */
+static char *
+cdd_title(const char * mode)
+{
+    size_t len = strlen(mode) + 64;
+    char * title = malloc(len);
+
+    if (title != NULL)
+        snprintf(title, len, "wrenchcone: W(%s), the wrench cone of mode %s",
+                 mode, mode);
+    return title;
+}
+
+int
+cmd_cone(const cli_command * self, int argc, char ** argv)
+{
+    cone_options o;
+    int status;
+    const char * mode;
+    char * title = NULL;
+    wc_problem_t P;
+    wc_error_t err;
+    wc_cone_t W;
+    wc_trace_t T;
+
+    if ((status = parse(&o, self, argc, argv)) >= 0)
+        return status;
+    if (o.arith_double && o.method != WC_METHOD_PAPER)
+        return cli_usage_error("cone", "--arith=double needs --method=paper%s", "");
+    if (o.arith_double && o.trace)
+        return cli_usage_error("cone", "--arith=double does not take --trace%s", "");
+    if (argc - optind != 2)
+        return cli_usage_error("cone", argc - optind < 2
+                               ? "cone needs PROBLEM and MODE%s"
+                               : "cone takes PROBLEM and MODE only%s", "");
+    mode = argv[optind + 1];
+    if (o.arith_double)
+        return cone_double(o.fmt, argv[optind], mode);
+
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_cone_init(W, 3);
+    wc_trace_init(T);
+    status = cli_load_problem(P, argv[optind], err);
+    if (status == WC_OK)
+        status = wc_mode_check(P, mode, WC_TABLE_CONE, err);
+    if (status == WC_OK)
+        status = wc_wrench_cone(W, o.trace ? T : NULL, P, mode, o.method, err);
+    if (status == WC_OK && o.fmt != FMT_TEXT && o.fmt != FMT_JSON
+        && (title = cdd_title(mode)) == NULL)
+        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
+    if (status != WC_OK)
+        cli_report(err, status);
+    else
+    {
+        print_cone(&o, mode, W, T, title);
+        status = cli_finish_output();
+    }
+    free(title);
+    wc_trace_clear(T);
+    wc_cone_clear(W);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}

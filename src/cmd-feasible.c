@@ -1,0 +1,96 @@
+/* cmd-feasible.c -- wrenchcone feasible: one mode's kinematic verdict,
+   with a checkable certificate.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.  */
+
+#include <config.h>
+
+#include "cli.h"
+#include "commands.h"
+
+const char cmd_feasible_usage[] =
+    "Usage: " PROG " feasible [OPTIONS] PROBLEM MODE\n"
+    "Decide whether MODE (paper Table 1 letters) is kinematically feasible and\n"
+    "print a certificate: a primitive integer witness twist, or Motzkin\n"
+    "multipliers whose combination of the mode's constraint rows is zero,\n"
+    "proving that no twist has the mode.  Exit status 0 either way.\n"
+    "\n"
+    "Options:\n"
+    "  --certificate=FILE  also write the self-contained JSON certificate to\n"
+    "                      FILE, for '" PROG " verify FILE'\n"
+    "  --format=FMT        text (default) or json (the certificate itself)\n"
+    "  -h, --help          print this help and exit\n"
+    "  -V, --version       print versions and exit\n";
+
+enum { OPT_FORMAT = 256, OPT_CERT };
+
+const struct option cmd_feasible_options[] = {
+    { "format", required_argument, NULL, OPT_FORMAT },
+    { "certificate", required_argument, NULL, OPT_CERT },
+    { NULL, 0, NULL, 0 }
+};
+
+typedef struct
+{
+    const wc_problem_struct * P;
+    const wc_certificate_struct * C;
+}
+cert_job;
+
+static int
+put_certificate(FILE * f, const void * p)
+{
+    const cert_job * j = p;
+
+    return wc_certificate_fprint(f, j->C, j->P, 1);
+}
+
+int
+cmd_feasible(const cli_command * self, int argc, char ** argv)
+{
+    cli_options p;
+    cli_format fmt = FMT_TEXT;
+    const char * certificate = NULL;
+    int c, status;
+    wc_problem_t P;
+    wc_error_t err;
+    wc_certificate_t C;
+
+    cli_options_init(&p, self);
+    while ((c = cli_option(&p, argc, argv)) >= 0)
+        if (c == OPT_CERT)
+            certificate = optarg;
+        else if (!cli_parse_format(&fmt, optarg, "feasible", 0))
+            return WC_EUSAGE;
+    if (c == CLI_EXIT)
+        return p.status;
+    if (argc - optind != 2)
+        return cli_usage_error("feasible", argc - optind < 2
+                               ? "feasible needs PROBLEM and MODE%s"
+                               : "feasible takes PROBLEM and MODE only%s", "");
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_certificate_init(C);
+    status = cli_load_problem(P, argv[optind], err);
+    if (status == WC_OK)
+        status = wc_feasible(C, P, argv[optind + 1], err);
+    if (status != WC_OK)
+        cli_report(err, status);
+    else if (certificate != NULL)
+    {
+        cert_job j = { P, C };
+
+        status = cli_write_certificate(certificate, put_certificate, &j);
+    }
+    if (status == WC_OK)
+    {
+        wc_certificate_fprint(stdout, C, P, fmt == FMT_JSON);
+        status = cli_finish_output();
+    }
+    wc_certificate_clear(C);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}

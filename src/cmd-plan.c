@@ -1,0 +1,100 @@
+/* cmd-plan.c -- wrenchcone plan: the sensorless insertion plan, or one
+   wrench's verdict under it.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.  */
+
+#include <config.h>
+
+#include "cli.h"
+#include "commands.h"
+
+const char cmd_plan_usage[] =
+    "Usage: " PROG " plan [OPTIONS] PROBLEM [FX FY TAU]\n"
+    "The sensorless insertion plan of paper Sections 8 and 9 for all fixels of\n"
+    "PROBLEM (their touching/near states are ignored: every contact state is\n"
+    "considered).  For every state S and nonempty L in S the string s on L,\n"
+    "m on S \\ L, u off S; for every S but the goal, m on S, s off S.  Prints\n"
+    "the strings of each state (Table 5), which are redundant syntactically and\n"
+    "exactly, the goal set G_goal (the complement of the union of their cones)\n"
+    "as pairwise disjoint NNC cones, whether G_goal lies in the goal state's\n"
+    "strongly stable set (eq. 25, both semantics), and with a shape where a\n"
+    "frictionless finger may push.  With a wrench FX FY TAU: whether it is in\n"
+    "G_goal and which needed strings hold it.\n"
+    "\n"
+    "Options:\n"
+    "  --complete       also the complete plan (beyond the paper): accept a\n"
+    "                   wrench when every transition graph it allows is acyclic\n"
+    "                   with the goal as its only sink (wrenchcone(1) states the\n"
+    "                   transition model); as a set, or for the wrench given,\n"
+    "                   with its transitions.  At most 6 fixels\n"
+    "  --format=FMT     text (default) or json\n"
+    "  -h, --help       print this help and exit\n"
+    "  -V, --version    print versions and exit\n";
+
+enum { OPT_FORMAT = 256, OPT_COMPLETE };
+
+const struct option cmd_plan_options[] = {
+    { "format", required_argument, NULL, OPT_FORMAT },
+    { "complete", no_argument, NULL, OPT_COMPLETE },
+    { NULL, 0, NULL, 0 }
+};
+
+int
+cmd_plan(const cli_command * self, int argc, char ** argv)
+{
+    cli_options p;
+    cli_format fmt = FMT_TEXT;
+    int c, status, with_wrench, complete = 0;
+    wc_problem_t P;
+    wc_error_t err;
+    wc_plan_t R;
+    wc_plan_wrench_t W;
+    fmpq g[3];
+    slong k;
+
+    cli_options_init(&p, self);
+    while ((c = cli_option(&p, argc, argv)) >= 0)
+        if (c == OPT_COMPLETE)
+            complete = 1;
+        else if (!cli_parse_format(&fmt, optarg, "plan", 0))
+            return WC_EUSAGE;
+    if (c == CLI_EXIT)
+        return p.status;
+    if (argc - optind != 1 && argc - optind != 4)
+        return cli_usage_error("plan", argc - optind < 1
+                               ? "plan needs PROBLEM%s"
+                               : "plan takes PROBLEM and optionally FX FY TAU%s",
+                               "");
+    with_wrench = argc - optind == 4;
+    wc_problem_init(P);
+    wc_error_init(err);
+    wc_plan_init(R);
+    wc_plan_wrench_init(W);
+    for (k = 0; k < 3; k++)
+        fmpq_init(g + k);
+    status = cli_load_problem(P, argv[optind], err);
+    if (status == WC_OK && with_wrench)
+        status = cli_parse_numbers(g, argv + optind + 1, 3, "<wrench>", err);
+    if (status == WC_OK)
+        status = with_wrench ? wc_plan_wrench(W, P, g, complete, err)
+            : wc_plan(R, P, complete, err);
+    if (status != WC_OK)
+        cli_report(err, status);
+    else
+    {
+        if (with_wrench)
+            wc_plan_wrench_fprint(stdout, W, fmt == FMT_JSON);
+        else
+            wc_plan_fprint(stdout, R, P, fmt == FMT_JSON);
+        status = cli_finish_output();
+    }
+    for (k = 0; k < 3; k++)
+        fmpq_clear(g + k);
+    wc_plan_wrench_clear(W);
+    wc_plan_clear(R);
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return status;
+}
