@@ -160,23 +160,6 @@ affine_point(fmpq * g, const fmpq * w0, const fmpq * dw, const fmpq_t s)
     }
 }
 
-/* h . w for an integer h and a rational w.  */
-static void
-dot_zq(fmpq_t r, const fmpz * h, const fmpq * w)
-{
-    fmpq_t t;
-    slong j;
-
-    fmpq_init(t);
-    fmpq_zero(r);
-    for (j = 0; j < 3; j++)
-    {
-        fmpq_mul_fmpz(t, w + j, h + j);
-        fmpq_add(r, r, t);
-    }
-    fmpq_clear(t);
-}
-
 /* (x, y) x (u, v) = x v - y u.  */
 static void
 cross_q(fmpq_t r, const fmpq * a, const fmpq * b)
@@ -258,8 +241,8 @@ polygon_edge(ivlist * L, slong edge, const fmpq * v0, const fmpq * v1,
 
         if (_fmpz_vec_is_zero(h, 3))
             continue;
-        dot_zq(a, h, w0);       /* h . w(0) */
-        dot_zq(b, h, dw);       /* h . (w(1) - w(0)) */
+        _wc_zqvec3_dot(a, h, w0);       /* h . w(0) */
+        _wc_zqvec3_dot(b, h, dw);       /* h . (w(1) - w(0)) */
         fmpq_add(s, a, b);      /* h . w(1) */
         if (fmpq_sgn(a) * fmpq_sgn(s) < 0)
         {

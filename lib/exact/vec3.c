@@ -30,6 +30,22 @@ _wc_qvec3_cross(fmpq * c, const fmpq * a, const fmpq * b)
     fmpq_submul(c + 2, a + 1, b + 0);
 }
 
+void
+_wc_zqvec3_dot(fmpq_t r, const fmpz * h, const fmpq * p)
+{
+    fmpq_t t;
+    slong j;
+
+    fmpq_init(t);
+    fmpq_zero(r);
+    for (j = 0; j < 3; j++)
+    {
+        fmpq_mul_fmpz(t, p + j, h + j);
+        fmpq_add(r, r, t);
+    }
+    fmpq_clear(t);
+}
+
 int
 _wc_zvec3_dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t)
 {

@@ -21,6 +21,9 @@
 void _wc_zvec3_cross(fmpz * c, const fmpz * a, const fmpz * b);
 void _wc_qvec3_cross(fmpq * c, const fmpq * a, const fmpq * b);
 
+/* r := h . p for an integer h and a rational p.  */
+void _wc_zqvec3_dot(fmpq_t r, const fmpz * h, const fmpq * p);
+
 /* The sign of a . b; t is scratch.  */
 int _wc_zvec3_dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t);
 

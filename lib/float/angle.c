@@ -75,23 +75,6 @@ _wc_qv3_neg(fmpq * a, const fmpq * b)
         fmpq_neg(a + j, b + j);
 }
 
-/* r = h . p for an integer h.  */
-void
-_wc_qv3_dot_z(fmpq_t r, const fmpz * h, const fmpq * p)
-{
-    fmpq_t t;
-    slong j;
-
-    fmpq_init(t);
-    fmpq_zero(r);
-    for (j = 0; j < 3; j++)
-    {
-        fmpq_mul_fmpz(t, p + j, h + j);
-        fmpq_add(r, r, t);
-    }
-    fmpq_clear(t);
-}
-
 /* atan(sqrt(t)) for a rational t >= 0: the angle whose tangent squared is
    t, to double accuracy even when t is tiny.  */
 double
@@ -277,12 +260,12 @@ in_closure(const wc_cone_t C, const fmpq * p)
     fmpq_init(s);
     for (i = 0; in && i < fmpz_mat_nrows(C->ineqs); i++)
     {
-        _wc_qv3_dot_z(s, WC_ROW(C->ineqs, i), p);
+        _wc_zqvec3_dot(s, WC_ROW(C->ineqs, i), p);
         in = fmpq_sgn(s) <= 0;
     }
     for (i = 0; in && i < fmpz_mat_nrows(C->eqs); i++)
     {
-        _wc_qv3_dot_z(s, WC_ROW(C->eqs, i), p);
+        _wc_zqvec3_dot(s, WC_ROW(C->eqs, i), p);
         in = fmpq_is_zero(s);
     }
     fmpq_clear(s);

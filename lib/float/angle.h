@@ -20,9 +20,8 @@
 
 #define WC_PI 3.14159265358979323846
 
-/* r := a . b; r := h . p for an integer h.  */
+/* r := a . b.  */
 void _wc_qv3_dot(fmpq_t r, const fmpq * a, const fmpq * b);
-void _wc_qv3_dot_z(fmpq_t r, const fmpz * h, const fmpq * p);
 
 int _wc_qv3_is_zero(const fmpq * a);
 void _wc_qv3_set(fmpq * a, const fmpq * b);

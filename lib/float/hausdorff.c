@@ -452,7 +452,7 @@ separated(const wc_cone_t A, const fmpq_mat_t R, const fmpq_mat_t L)
         {
             if (_wc_qv3_is_zero(WC_ROW(R, j)))
                 continue;
-            _wc_qv3_dot_z(s, h, WC_ROW(R, j));
+            _wc_zqvec3_dot(s, h, WC_ROW(R, j));
             if (i < m)
                 sep = fmpq_sgn(s) > 0;
             else
