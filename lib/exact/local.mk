@@ -5,13 +5,16 @@ lib_libwc_la_SOURCES += \
 	lib/exact/vec3.c \
 	lib/exact/cone.c \
 	lib/exact/cddbridge.c \
+	lib/exact/lp.c \
 	lib/exact/hull3.c \
 	lib/exact/cells.c
 wcexactdir = $(pkgincludedir)/exact
 wcexact_HEADERS = \
 	lib/exact/cone.h \
+	lib/exact/relation.h \
 	lib/exact/cells.h
 noinst_HEADERS += \
 	lib/exact/vec3.h \
 	lib/exact/cddbridge.h \
+	lib/exact/lp.h \
 	lib/exact/hull3.h
