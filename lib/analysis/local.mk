@@ -8,7 +8,11 @@ lib_libwc_la_SOURCES += \
 	lib/analysis/trace.c \
 	lib/analysis/kinematics.c \
 	lib/analysis/push.c \
+	lib/analysis/stabmodel.c \
+	lib/analysis/facesys.c \
+	lib/analysis/classify.c \
 	lib/analysis/stability.c \
+	lib/analysis/robust.c \
 	lib/analysis/plan.c
 wcanalysisdir = $(pkgincludedir)/analysis
 wcanalysis_HEADERS = \
@@ -17,3 +21,6 @@ wcanalysis_HEADERS = \
 	lib/analysis/push.h \
 	lib/analysis/stability.h \
 	lib/analysis/plan.h
+noinst_HEADERS += \
+	lib/analysis/stabmodel.h \
+	lib/analysis/facesys.h
