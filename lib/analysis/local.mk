@@ -3,6 +3,7 @@
 # regions, insertion plans.
 
 lib_libwc_la_SOURCES += \
+	lib/analysis/wrench.c \
 	lib/analysis/direct.c \
 	lib/analysis/paper.c \
 	lib/analysis/trace.c \
