@@ -238,16 +238,32 @@ classify_face(wc_classify_t R, const _wc_stab_model * m, const char * y,
     return r < 0 ? WC_EINTERNAL : WC_OK;
 }
 
+typedef struct
+{
+    wc_classify_struct * R;
+    const _wc_stab_model * m;
+    int certificates;
+    wc_error_struct * err;
+}
+face_ctx;
+
+static int
+visit_face(void * p, const char * y, int rot)
+{
+    face_ctx * c = p;
+
+    return classify_face(c->R, c->m, y, rot, c->certificates, c->err);
+}
+
 /* Every moving face; *paper_found when one other than n..n moves (then
    R->paper is its first motion).  */
 static int
 classify_moving(wc_classify_t R, int * paper_found,
                 const _wc_stab_model * m, int certificates, wc_error_t err)
 {
-    wc_modes_t T;
+    face_ctx c;
     slong n = m->n, i;
-    int status, rot;
-    char * y;
+    int status;
 
     *paper_found = 0;
     if (m->t == 0)
@@ -255,40 +271,29 @@ classify_moving(wc_classify_t R, int * paper_found,
         /* No contact: the body moves with nudot = M^-1 g unless g = 0.  */
         if (!_wc_qvec_is_zero(R->g, 3))
         {
-            wc_motion_struct * a;
+            char * y = _wc_stab_expand(m, "");
+            wc_motion_struct * a = add_motion(R, y);
 
-            y = _wc_stab_expand(m, "");
-            a = add_motion(R, y);
             free(y);
             for (i = 0; i < 3; i++)
                 fmpq_div(a->nudot + i, R->g + i, m->M + i);
         }
         return WC_OK;
     }
-    wc_modes_init(T);
-    status = _wc_stab_touching_modes(T, m, err);
-    for (i = 0; i < T->count && status == WC_OK; i++)
+    c.R = R;
+    c.m = m;
+    c.certificates = certificates;
+    c.err = err;
+    status = _wc_stab_moving_faces(m, visit_face, &c, err);
+    /* The faces other than n..n come first: a motion of one holds g in
+       W(y).  */
+    if (status == WC_OK && R->nmotions > 0
+        && !_wc_stab_all_n(m, R->motions[0].sign))
     {
-        y = _wc_stab_expand(m, T->modes[i]);
-        if (!_wc_stab_all_n(m, y))
-            status = classify_face(R, m, y, 0, certificates, err);
-        free(y);
-    }
-    wc_modes_clear(T);
-    if (status == WC_OK && R->nmotions > 0)
-    {
-        /* a motion of a face other than n..n holds g in W(y) */
         *paper_found = 1;
         R->paper.sign = copy_string(R->motions[0].sign);
         _wc_qvec_set(R->paper.nudot, R->motions[0].nudot, 3);
         _wc_qvec_set(R->paper.c, R->motions[0].c, 2 * n);
-    }
-    if (status == WC_OK && m->shared)
-    {
-        y = rest_string(m);
-        for (rot = 1; rot >= -1 && status == WC_OK; rot -= 2)
-            status = classify_face(R, m, y, rot, certificates, err);
-        free(y);
     }
     return status;
 }

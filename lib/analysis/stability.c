@@ -265,45 +265,43 @@ collect_planes(fmpz_mat_t A, slong * r, const wc_cone_t C)
     fmpz_mat_clear(B);
 }
 
+typedef struct
+{
+    wc_stability_struct * S;
+    const _wc_stab_model * m;
+    wc_error_struct * err;
+}
+cone_ctx;
+
+static int
+visit_cone(void * p, const char * y, int rot)
+{
+    cone_ctx * c = p;
+
+    return face_cone(add_moving(c->S, y, rot), c->m, y, rot, c->err);
+}
+
 /* The moving faces' cones W_y, with the rotation faces; with no touching
    fixel, the six pieces of R^3 minus the origin.  */
 static int
 stability_moving(wc_stability_t S, const _wc_stab_model * m, wc_error_t err)
 {
-    wc_modes_t T;
-    slong i, k;
+    cone_ctx c;
     char * y;
-    int status = WC_OK;
+    int k, status = WC_OK;
 
     if (m->t == 0)
     {
         y = _wc_stab_expand(m, "");
         for (k = 1; k <= 6 && status == WC_OK; k++)
-            status = face_cone(add_moving(S, y, 2), m, NULL, (int) k, err);
+            status = face_cone(add_moving(S, y, 2), m, NULL, k, err);
         free(y);
         return status;
     }
-    wc_modes_init(T);
-    status = _wc_stab_touching_modes(T, m, err);
-    for (i = 0; i < T->count && status == WC_OK; i++)
-    {
-        y = _wc_stab_expand(m, T->modes[i]);
-        if (!_wc_stab_all_n(m, y))
-            status = face_cone(add_moving(S, y, 0), m, y, 0, err);
-        free(y);
-    }
-    if (status == WC_OK && m->shared)
-    {
-        y = _wc_stab_expand(m, T->modes[0]);
-        for (i = 0; i < m->t; i++)
-            y[m->tidx[i]] = 'n';
-        for (k = 1; k >= -1 && status == WC_OK; k -= 2)
-            status = face_cone(add_moving(S, y, (int) k), m, y, (int) k,
-                               err);
-        free(y);
-    }
-    wc_modes_clear(T);
-    return status;
+    c.S = S;
+    c.m = m;
+    c.err = err;
+    return _wc_stab_moving_faces(m, visit_cone, &c, err);
 }
 
 /* The weak cone -J (friction cones), the moving cones, and eq. 19's extra

@@ -119,37 +119,6 @@ _wc_stab_edge_rows(fmpq_mat_t Q, const _wc_stab_model * m, const char * x,
         fmpq_clear(ed + j);
 }
 
-int
-_wc_stab_touching_modes(wc_modes_t T, const _wc_stab_model * m,
-                        wc_error_t err)
-{
-    const wc_problem_struct * P = m->P;
-    wc_problem_t Q;
-    slong i;
-    int status;
-
-    wc_problem_init(Q);
-    fmpq_set(Q->mass, P->mass);
-    fmpq_set(Q->inertia, P->inertia);
-    fmpq_set(Q->com + 0, P->com + 0);
-    fmpq_set(Q->com + 1, P->com + 1);
-    for (i = 0; i < m->t; i++)
-    {
-        const wc_fixel_struct * f = P->fixels + m->tidx[i];
-        wc_fixel_struct * h = wc_problem_add_fixel(Q);
-
-        fmpq_set(h->point + 0, f->point + 0);
-        fmpq_set(h->point + 1, f->point + 1);
-        fmpq_set(h->normal + 0, f->normal + 0);
-        fmpq_set(h->normal + 1, f->normal + 1);
-        fmpq_set(h->mu_s, f->mu_s);
-        fmpq_set(h->mu_k, f->mu_k);
-    }
-    status = wc_modes_enumerate(T, Q, err);
-    wc_problem_clear(Q);
-    return status;
-}
-
 char *
 _wc_stab_expand(const _wc_stab_model * m, const char * s)
 {
@@ -173,4 +142,73 @@ _wc_stab_all_n(const _wc_stab_model * m, const char * y)
         if (y[m->tidx[i]] != 'n')
             return 0;
     return 1;
+}
+
+/* T := the modes of the touching-only problem.  */
+static int
+touching_modes(wc_modes_t T, const _wc_stab_model * m, wc_error_t err)
+{
+    const wc_problem_struct * P = m->P;
+    wc_problem_t Q;
+    slong i;
+    int status;
+
+    wc_problem_init(Q);
+    fmpq_set(Q->mass, P->mass);
+    fmpq_set(Q->inertia, P->inertia);
+    fmpq_set(Q->com + 0, P->com + 0);
+    fmpq_set(Q->com + 1, P->com + 1);
+    for (i = 0; i < m->t; i++)
+    {
+        const wc_fixel_struct * f = P->fixels + m->tidx[i];
+        wc_fixel_struct * h = wc_problem_add_fixel(Q);
+
+        if (h == NULL)
+        {
+            wc_problem_clear(Q);
+            return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                "out of memory");
+        }
+        fmpq_set(h->point + 0, f->point + 0);
+        fmpq_set(h->point + 1, f->point + 1);
+        fmpq_set(h->normal + 0, f->normal + 0);
+        fmpq_set(h->normal + 1, f->normal + 1);
+        fmpq_set(h->mu_s, f->mu_s);
+        fmpq_set(h->mu_k, f->mu_k);
+    }
+    status = wc_modes_enumerate(T, Q, err);
+    wc_problem_clear(Q);
+    return status;
+}
+
+int
+_wc_stab_moving_faces(const _wc_stab_model * m,
+                      int (* visit)(void * ctx, const char * y, int rot),
+                      void * ctx, wc_error_t err)
+{
+    wc_modes_t T;
+    slong i;
+    int status, rot;
+    char * y;
+
+    wc_modes_init(T);
+    status = touching_modes(T, m, err);
+    for (i = 0; i < T->count && status == WC_OK; i++)
+    {
+        y = _wc_stab_expand(m, T->modes[i]);
+        if (!_wc_stab_all_n(m, y))
+            status = visit(ctx, y, 0);
+        free(y);
+    }
+    if (status == WC_OK && m->shared)
+    {
+        y = _wc_stab_expand(m, T->modes[0]);
+        for (i = 0; i < m->t; i++)
+            y[m->tidx[i]] = 'n';
+        for (rot = 1; rot >= -1 && status == WC_OK; rot -= 2)
+            status = visit(ctx, y, rot);
+        free(y);
+    }
+    wc_modes_clear(T);
+    return status;
 }

@@ -43,9 +43,15 @@ void _wc_stab_edge_wrench(fmpq * w, const _wc_stab_model * m, slong i,
 void _wc_stab_edge_rows(fmpq_mat_t Q, const _wc_stab_model * m,
                         const char * x, slong skip);
 
-/* The modes of the touching-only problem: the moving faces.  */
-int _wc_stab_touching_modes(wc_modes_t T, const _wc_stab_model * m,
-                            wc_error_t err);
+/* Call visit(ctx, y, rot) on every moving face of the touching fixels, in
+   order: the faces of their arrangement other than n..n (rot = 0, y from
+   wc_modes_enumerate's sorted modes, u on near fixels), then, when every
+   touching fixel shares a point, the two rotation faces (y = n..n, rot =
+   1 then -1).  Stops at the first status other than WC_OK, and returns
+   it.  m must have a touching fixel.  */
+int _wc_stab_moving_faces(const _wc_stab_model * m,
+                          int (* visit)(void * ctx, const char * y, int rot),
+                          void * ctx, wc_error_t err);
 
 /* The full-length string (malloc'd) of touching-only mode s: u on near
    fixels.  */
