@@ -17,6 +17,7 @@
 #include "model/mode.h"
 #include "model/model.h"
 #include "exact/cone.h"
+#include "exact/relation.h"
 #include "analysis/wrench.h"
 #include "analysis/kinematics.h"
 #include "check/verify.h"

@@ -11,7 +11,11 @@
 
 #include <config.h>
 
-#include "wrenchcone.h"
+#include "model/mode.h"
+#include "model/model.h"
+#include "exact/cone.h"
+#include "exact/lp.h"
+#include "analysis/wrench.h"
 
 /* Append column col of J, times sign, to A as a new last row.  */
 static void
@@ -93,16 +97,7 @@ wc_wrench_cone_direct(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
                 fmpq_neg(x, x);
             }
     }
-    {
-        fmpq_mat_t Q2;
-
-        fmpq_mat_init(Q2, q, 3);
-        for (i = 0; i < q; i++)
-            for (j = 0; j < 3; j++)
-                fmpq_set(fmpq_mat_entry(Q2, i, j), fmpq_mat_entry(Q, i, j));
-        fmpq_mat_swap(Q, Q2);
-        fmpq_mat_clear(Q2);
-    }
+    _wc_fmpq_mat_keep_rows(Q, q);
 
     status = wc_cone_set_hrep(V, Eq, Le, Lt, err);
     if (status != WC_OK)
@@ -147,13 +142,4 @@ cleanup:
         fmpq_clear(e + j);
     wc_cone_clear(V);
     return status;
-}
-
-int
-wc_wrench_cone(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
-               const char * mode, wc_method method, wc_error_t err)
-{
-    if (method == WC_METHOD_PAPER)
-        return wc_wrench_cone_paper(W, trace, P, mode, err);
-    return wc_wrench_cone_direct(W, trace, P, mode, err);
 }

@@ -36,46 +36,49 @@
 #include "exact/zvec3set.h"
 #include "exact/arrangement.h"
 #include "exact/cddbridge.h"
+#include "exact/lp.h"
 #include "analysis/kinematics.h"
 
-#define ROW(A, i) ((A)->rows[i])
 
-const char *
-wc_relation_str(wc_relation r)
+/* v (len entries) := the primitive integer vector on the ray of x.  */
+static void
+fmpq_vec_primitive(fmpz * v, const fmpq * x, slong len)
 {
-    return r == WC_REL_GT ? ">" : r == WC_REL_GE ? ">=" : "=";
+    fmpz_t den, c;
+    slong j;
+
+    fmpz_init(den);
+    fmpz_init(c);
+    fmpz_one(den);
+    for (j = 0; j < len; j++)
+        fmpz_lcm(den, den, fmpq_denref(x + j));
+    for (j = 0; j < len; j++)
+    {
+        fmpz_divexact(c, den, fmpq_denref(x + j));
+        fmpz_mul(v + j, fmpq_numref(x + j), c);
+    }
+    _fmpz_vec_content(c, v, len);
+    if (!fmpz_is_zero(c))
+        _fmpz_vec_scalar_divexact_fmpz(v, v, len, c);
+    fmpz_clear(den);
+    fmpz_clear(c);
 }
 
 /* a (2n x 3): row k is J's column k as a primitive integer vector.  */
 static void
 columns(fmpz_mat_t a, const wc_problem_t P)
 {
-    slong K = 2 * P->n, k, j;
-    fmpq_mat_t J;
-    fmpz_t den, c;
+    slong K = 2 * P->n, k;
+    fmpq_mat_t J, Jt;
 
     fmpq_mat_init(J, 3, K);
-    fmpz_init(den);
-    fmpz_init(c);
+    fmpq_mat_init(Jt, K, 3);
     wc_model_J(J, P);
+    fmpq_mat_transpose(Jt, J);
     for (k = 0; k < K; k++)
-    {
-        fmpz * v = ROW(a, k);
-
-        fmpz_one(den);
-        for (j = 0; j < 3; j++)
-            fmpz_lcm(den, den, fmpq_denref(fmpq_mat_entry(J, j, k)));
-        for (j = 0; j < 3; j++)
-        {
-            fmpz_divexact(c, den, fmpq_denref(fmpq_mat_entry(J, j, k)));
-            fmpz_mul(v + j, fmpq_numref(fmpq_mat_entry(J, j, k)), c);
-        }
-        _fmpz_vec_content(c, v, 3);
-        _fmpz_vec_scalar_divexact_fmpz(v, v, 3, c);
-    }
+        fmpq_vec_primitive(WC_ROW(a, k), WC_ROW(Jt, k), 3);
     fmpq_mat_clear(J);
-    fmpz_clear(den);
-    fmpz_clear(c);
+    fmpq_mat_clear(Jt);
 }
 
 int
@@ -95,7 +98,7 @@ wc_mode_constraints(fmpz_mat_t rows, wc_relation ** rel,
     r = malloc(sizeof(wc_relation) * (2 * n + 1));
     columns(a, P);
 #define ADD(k, sign, rl) do { \
-        _fmpz_vec_scalar_mul_si(ROW(R, m), ROW(a, k), 3, sign); \
+        _fmpz_vec_scalar_mul_si(WC_ROW(R, m), WC_ROW(a, k), 3, sign); \
         r[m++] = (rl); \
     } while (0)
     for (i = 0; i < n; i++)
@@ -128,7 +131,7 @@ wc_mode_constraints(fmpz_mat_t rows, wc_relation ** rel,
     fmpz_mat_clear(rows);
     fmpz_mat_init(rows, m, 3);
     for (i = 0; i < m; i++)
-        _fmpz_vec_set(ROW(rows, i), ROW(R, i), 3);
+        _fmpz_vec_set(WC_ROW(rows, i), WC_ROW(R, i), 3);
     *rel = r;
     fmpz_mat_clear(a);
     fmpz_mat_clear(R);
@@ -549,38 +552,14 @@ wc_certificate_clear(wc_certificate_t C)
     C->mult = NULL;
 }
 
-/* v (len entries) := the primitive integer vector on the ray of x.  */
-static void
-fmpq_vec_primitive(fmpz * v, const fmpq * x, slong len)
-{
-    fmpz_t den, c;
-    slong j;
-
-    fmpz_init(den);
-    fmpz_init(c);
-    fmpz_one(den);
-    for (j = 0; j < len; j++)
-        fmpz_lcm(den, den, fmpq_denref(x + j));
-    for (j = 0; j < len; j++)
-    {
-        fmpz_divexact(c, den, fmpq_denref(x + j));
-        fmpz_mul(v + j, fmpq_numref(x + j), c);
-    }
-    _fmpz_vec_content(c, v, len);
-    if (!fmpz_is_zero(c))
-        _fmpz_vec_scalar_divexact_fmpz(v, v, len, c);
-    fmpz_clear(den);
-    fmpz_clear(c);
-}
-
 int
 wc_feasible(wc_certificate_t C, const wc_problem_t P, const char * mode,
             wc_error_t err)
 {
-    slong m, i, j, ngt = 0;
+    slong m;
     fmpq_mat_t A;
-    fmpq * b = NULL, * x = NULL;
-    int * eq = NULL, status, found;
+    fmpq * z, * y;
+    int status, found;
 
     wc_certificate_clear(C);
     wc_certificate_init(C);
@@ -592,86 +571,34 @@ wc_feasible(wc_certificate_t C, const wc_problem_t P, const char * mode,
     m = fmpz_mat_nrows(C->rows);
     C->mult = _fmpz_vec_init(m);
 
-    /* A twist with row . nu >= 1 on > rows (the system is homogeneous),
-       >= 0 on >= rows, = 0 on = rows.  */
+    /* A twist, or Motzkin multipliers (m = 0: nu = 0).  */
     fmpq_mat_init(A, m, 3);
     fmpq_mat_set_fmpz_mat(A, C->rows);
-    b = _fmpq_vec_init(m + 4);
-    x = _fmpq_vec_init(m + 4);
-    eq = flint_calloc(m + 4, sizeof(int));
-    for (i = 0; i < m; i++)
-    {
-        if (C->rel[i] == WC_REL_GT)
-        {
-            fmpq_one(b + i);
-            ngt++;
-        }
-        eq[i] = C->rel[i] == WC_REL_EQ;
-    }
-    if (m == 0)
-        found = 1;              /* no constraint: nu = 0 */
-    else
-        found = _wc_cdd_lp_point(x, A, b, eq, err);
+    z = _fmpq_vec_init(3);
+    y = _fmpq_vec_init(m + 1);
+    found = _wc_lp_motzkin(z, y, A, C->rel, err);
     if (found < 0)
-    {
         status = WC_EINTERNAL;
-        goto cleanup;
-    }
-    if (found)
+    else if (found)
     {
         C->feasible = 1;
-        fmpq_vec_primitive(C->witness, x, 3);
+        fmpq_vec_primitive(C->witness, z, 3);
         if (!wc_certificate_check(C))
             status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                   "internal error: the witness of %s fails",
                                   mode);
-        goto cleanup;
     }
-
-    /* Motzkin: y with sum y_k rows_k = 0, y >= 0 off the = rows, and the
-       > multipliers summing to 1; a basic solution is sparse.  */
+    else
+    {
+        fmpq_vec_primitive(C->mult, y, m);
+        if (!wc_certificate_check(C))
+            status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                  "internal error: certificate of %s fails",
+                                  mode);
+    }
     fmpq_mat_clear(A);
-    fmpq_mat_init(A, 4 + m, m);
-    for (i = 0; i < m + 4; i++)
-        fmpq_zero(b + i);
-    for (j = 0; j < 3; j++)
-    {
-        for (i = 0; i < m; i++)
-            fmpq_set_fmpz(fmpq_mat_entry(A, j, i), fmpz_mat_entry(C->rows, i, j));
-        eq[j] = 1;
-    }
-    for (i = 0; i < m; i++)
-        if (C->rel[i] == WC_REL_GT)
-            fmpq_one(fmpq_mat_entry(A, 3, i));
-    fmpq_one(b + 3);
-    eq[3] = 1;
-    for (i = 0; i < m; i++)
-    {
-        if (C->rel[i] != WC_REL_EQ)
-            fmpq_one(fmpq_mat_entry(A, 4 + i, i));      /* y_i >= 0 */
-        else
-            fmpq_zero(fmpq_mat_entry(A, 4 + i, i));     /* 0 >= 0 */
-        eq[4 + i] = 0;
-    }
-    found = ngt > 0 ? _wc_cdd_lp_point(x, A, b, eq, err) : 0;
-    if (found <= 0)
-    {
-        status = found < 0 ? WC_EINTERNAL
-            : wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "internal error: "
-                           "mode %s is infeasible but has no Motzkin "
-                           "certificate", mode);
-        goto cleanup;
-    }
-    fmpq_vec_primitive(C->mult, x, m);
-    if (!wc_certificate_check(C))
-        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                              "internal error: certificate of %s fails", mode);
-
-cleanup:
-    fmpq_mat_clear(A);
-    _fmpq_vec_clear(b, m + 4);
-    _fmpq_vec_clear(x, m + 4);
-    flint_free(eq);
+    _fmpq_vec_clear(z, 3);
+    _fmpq_vec_clear(y, m + 1);
     return status;
 }
 
@@ -687,7 +614,7 @@ wc_certificate_check(const wc_certificate_t C)
     {
         for (i = 0; i < m && ok; i++)
         {
-            _fmpz_vec_dot(s, ROW(C->rows, i), C->witness, 3);
+            _fmpz_vec_dot(s, WC_ROW(C->rows, i), C->witness, 3);
             ok = C->rel[i] == WC_REL_GT ? fmpz_sgn(s) > 0
                 : C->rel[i] == WC_REL_GE ? fmpz_sgn(s) >= 0 : fmpz_is_zero(s);
         }

@@ -21,15 +21,13 @@
 #include <flint/fmpz_mat.h>
 
 #include "core/problem.h"
+#include "exact/relation.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-typedef enum { WC_REL_GT = 0, WC_REL_GE = 1, WC_REL_EQ = 2 } wc_relation;
-
-/* ">", ">=" or "=".  */
-const char * wc_relation_str(wc_relation r);
+/* wc_relation and wc_relation_str: exact/relation.h.  */
 
 /* The constraint rows of mode on the twist, in fixel order (for each
    fixel: its normal row, then its tangential row when the letter

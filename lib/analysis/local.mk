@@ -3,16 +3,21 @@
 # regions, insertion plans.
 
 lib_libwc_la_SOURCES += \
+	lib/analysis/wrench.c \
 	lib/analysis/direct.c \
 	lib/analysis/paper.c \
 	lib/analysis/trace.c \
 	lib/analysis/kinematics.c \
 	lib/analysis/push.c \
+	lib/analysis/stabmodel.c \
+	lib/analysis/facesys.c \
+	lib/analysis/classify.c \
 	lib/analysis/stability.c \
 	lib/analysis/planstr.c \
 	lib/analysis/plancones.c \
 	lib/analysis/plangraph.c \
 	lib/analysis/plan.c \
+	lib/analysis/robust.c \
 	lib/analysis/plansweep.c
 wcanalysisdir = $(pkgincludedir)/analysis
 wcanalysis_HEADERS = \
@@ -22,4 +27,6 @@ wcanalysis_HEADERS = \
 	lib/analysis/stability.h \
 	lib/analysis/plan.h
 noinst_HEADERS += \
-	lib/analysis/planparts.h
+	lib/analysis/planparts.h \
+	lib/analysis/stabmodel.h \
+	lib/analysis/facesys.h

@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "wrenchcone.h"
+#include "analysis/wrench.h"
 
 void
 wc_trace_init(wc_trace_t T)

@@ -7,6 +7,7 @@ lib_libwc_la_SOURCES += \
 	lib/exact/zvec3set.c \
 	lib/exact/cone.c \
 	lib/exact/cddbridge.c \
+	lib/exact/lp.c \
 	lib/exact/hull3.c \
 	lib/exact/arrangement.c \
 	lib/exact/cells.c \
@@ -16,12 +17,14 @@ lib_libwc_la_SOURCES += \
 wcexactdir = $(pkgincludedir)/exact
 wcexact_HEADERS = \
 	lib/exact/cone.h \
+	lib/exact/relation.h \
 	lib/exact/cells.h
 noinst_HEADERS += \
 	lib/exact/vec3.h \
 	lib/exact/hash.h \
 	lib/exact/zvec3set.h \
 	lib/exact/cddbridge.h \
+	lib/exact/lp.h \
 	lib/exact/hull3.h \
 	lib/exact/arrangement.h \
 	lib/exact/incidence.h \

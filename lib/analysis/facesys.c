@@ -1,0 +1,317 @@
+/* facesys.c -- the linear system of one moving face for a wrench, solved
+   to a motion or to a Motzkin certificate.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   The moving solutions of the complementarity problem at zero velocity are
+   grouped by the mode string y of the motion (stability.h).  For a face y
+   and a wrench g the question "is there a motion of face y" is the
+   homogeneous system in z = (nudot, lambda, tau), tau the homogenising
+   variable of g:
+
+     M nudot - sum_j lambda_j w_j - tau g = 0       (three rows)
+     y's rows on nudot (Table 1 signs of a = J^T nudot)
+     lambda_j >= 0,  tau > 0
+
+   where w_j = e_n J_in + e_t J_it runs over the friction edges (e_n, e_t)
+   that y's letters allow (n: both mu_s edges, l: (1, -mu_k), r: (1, mu_k),
+   s: none).  A solution with tau > 0 scaled to tau = 1 is a motion
+   (nudot, c = sum lambda_j (e_n, e_t) at the edges' fixels).  Without one,
+   Motzkin's transposition theorem gives multipliers, the certificate
+   verify.c checks: the rows here are exactly the rows documented in
+   verify.h, in the same order.  */
+
+#include <config.h>
+
+#include <flint/fmpq_vec.h>
+
+#include "model/model.h"
+#include "exact/lp.h"
+#include "analysis/facesys.h"
+
+typedef struct
+{
+    fmpq_mat_t A;           /* rows over z = (nudot, lambda, tau) */
+    wc_relation * rel;
+    slong rows, e;          /* e edges */
+    slong * efix;           /* the fixel of edge j */
+    fmpq * edir;            /* (e_n, e_t) of edge j; room for 2 alen */
+    slong alen;
+}
+facesys;
+
+static void
+facesys_clear(facesys * s)
+{
+    fmpq_mat_clear(s->A);
+    flint_free(s->rel);
+    flint_free(s->efix);
+    _fmpq_vec_clear(s->edir, 2 * s->alen);
+}
+
+static void
+put_row(facesys * s, const fmpq * r, int neg, wc_relation rel)
+{
+    slong k;
+
+    for (k = 0; k < 3; k++)
+        if (neg)
+            fmpq_neg(fmpq_mat_entry(s->A, s->rows, k), r + k);
+        else
+            fmpq_set(fmpq_mat_entry(s->A, s->rows, k), r + k);
+    s->rel[s->rows++] = rel;
+}
+
+/* The friction edges the force letters x allow.  */
+static void
+facesys_edges(facesys * s, const _wc_stab_model * m, const char * x)
+{
+    const wc_problem_struct * P = m->P;
+    slong n = m->n, i, j, c;
+    fmpq ed[4];
+
+    for (j = 0; j < 4; j++)
+        fmpq_init(ed + j);
+    s->alen = 2 * n + 1;
+    s->efix = flint_malloc(sizeof(slong) * s->alen);
+    s->edir = _fmpq_vec_init(2 * s->alen);
+    s->e = 0;
+    for (i = 0; i < n; i++)
+    {
+        if (P->fixels[i].state != WC_TOUCHING)
+            continue;
+        c = wc_friction_edges(ed, P->fixels + i, x[i]);
+        for (j = 0; j < c; j++, s->e++)
+        {
+            s->efix[s->e] = i;
+            _wc_qvec_set(s->edir + 2 * s->e, ed + 2 * j, 2);
+        }
+    }
+    for (j = 0; j < 4; j++)
+        fmpq_clear(ed + j);
+}
+
+/* y's rows on nudot: Table 1 signs of a = J^T nudot.  */
+static void
+facesys_motion_rows(facesys * s, const _wc_stab_model * m, const char * y,
+                    int rot)
+{
+    slong i;
+
+    for (i = 0; i < m->n; i++)
+    {
+        const fmpq * jn = m->Jn + 3 * i, * jt = m->Jt + 3 * i;
+        char c = y[i];
+
+        if (m->P->fixels[i].state == WC_NEAR)
+        {
+            if (c == 'a')
+                put_row(s, jn, 1, WC_REL_GT);
+            else if (c == 's')
+                put_row(s, jn, 0, WC_REL_GE);
+            continue;
+        }
+        if (rot != 0)
+            c = 'n';
+        switch (c)
+        {
+        case 's':
+            put_row(s, jn, 0, WC_REL_GT);
+            break;
+        case 'l':
+            put_row(s, jn, 0, WC_REL_EQ);
+            put_row(s, jt, 0, WC_REL_GT);
+            break;
+        case 'r':
+            put_row(s, jn, 0, WC_REL_EQ);
+            put_row(s, jt, 1, WC_REL_GT);
+            break;
+        default:
+            put_row(s, jn, 0, WC_REL_EQ);
+            put_row(s, jt, 0, WC_REL_EQ);
+            break;
+        }
+    }
+    if (rot != 0)
+        put_row(s, m->v, rot < 0, WC_REL_GT);
+}
+
+static void
+facesys_init(facesys * s, const _wc_stab_model * m, const char * y,
+             const char * x, int rot, const fmpq * g)
+{
+    slong j, k, e, nv;
+    fmpq w[3];
+
+    facesys_edges(s, m, x);
+    e = s->e;
+    nv = 3 + e + 1;
+    fmpq_mat_init(s->A, 3 + 2 * m->n + 1 + e + 1, nv);
+    s->rel = flint_malloc(sizeof(wc_relation) * fmpq_mat_nrows(s->A));
+
+    /* M nudot - sum lambda_j w_j - tau g = 0 */
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_init(w + k);
+        fmpq_set(fmpq_mat_entry(s->A, k, k), m->M + k);
+        fmpq_neg(fmpq_mat_entry(s->A, k, nv - 1), g + k);
+        s->rel[k] = WC_REL_EQ;
+    }
+    for (j = 0; j < e; j++)
+    {
+        _wc_stab_edge_wrench(w, m, s->efix[j], s->edir + 2 * j);
+        for (k = 0; k < 3; k++)
+            fmpq_neg(fmpq_mat_entry(s->A, k, 3 + j), w + k);
+    }
+    s->rows = 3;
+    facesys_motion_rows(s, m, y, rot);
+    for (j = 0; j < e; j++)
+    {
+        fmpq_one(fmpq_mat_entry(s->A, s->rows, 3 + j));
+        s->rel[s->rows++] = WC_REL_GE;
+    }
+    fmpq_one(fmpq_mat_entry(s->A, s->rows, nv - 1));
+    s->rel[s->rows++] = WC_REL_GT;
+    _wc_fmpq_mat_keep_rows(s->A, s->rows);
+    for (k = 0; k < 3; k++)
+        fmpq_clear(w + k);
+}
+
+/* Read a solution z of s (tau > 0) into nudot and c (2n).  */
+static void
+facesys_motion(fmpq * nudot, fmpq * c, const facesys * s,
+               const _wc_stab_model * m, const fmpq * z)
+{
+    slong n = m->n, j, k;
+    const fmpq * tau = z + 3 + s->e;
+    fmpq_t q;
+
+    fmpq_init(q);
+    for (k = 0; k < 3; k++)
+        fmpq_div(nudot + k, z + k, tau);
+    _wc_qvec_zero(c, 2 * n);
+    for (j = 0; j < s->e; j++)
+    {
+        slong i = s->efix[j];
+
+        fmpq_div(q, z + 3 + j, tau);
+        fmpq_addmul(c + i, q, s->edir + 2 * j);
+        fmpq_addmul(c + n + i, q, s->edir + 2 * j + 1);
+    }
+    fmpq_clear(q);
+}
+
+/* 1 when face y forces nudot = 0 -- every touching letter n, no contact
+   point shared by all touching fixels, no near row but a_in >= 0 --, or
+   nudot on the rotation line with no near row at all: a cone membership
+   in R^3 decides it.  */
+static int
+zero_face(const _wc_stab_model * m, const char * y)
+{
+    slong i;
+
+    if (m->t == 0)
+        return 0;
+    for (i = 0; i < m->n; i++)
+    {
+        if (m->P->fixels[i].state == WC_TOUCHING ? y[i] != 'n'
+            : (m->shared ? y[i] != 'u' : y[i] == 'a'))
+            return 0;
+    }
+    return 1;
+}
+
+/* A zero face: nudot = 0 (or mu v, v the rotation, when every touching
+   fixel shares a point), so g = mu M v - sum lambda_j w_j, one cone
+   membership.  z (3 + e + 1) := the solution.  */
+static int
+zero_face_solve(fmpq * z, const facesys * s, const _wc_stab_model * m,
+                const fmpq * g, wc_error_t err)
+{
+    slong k = s->e + (m->shared ? 2 : 0), nv = 3 + s->e + 1, j, i;
+    fmpq * G = _fmpq_vec_init(3 * k + 3), * lam = _fmpq_vec_init(k + 1);
+    fmpq sep[3];
+    int r;
+
+    for (i = 0; i < 3; i++)
+        fmpq_init(sep + i);
+    for (j = 0; j < s->e; j++)
+    {
+        _wc_stab_edge_wrench(G + 3 * j, m, s->efix[j], s->edir + 2 * j);
+        for (i = 0; i < 3; i++)
+            fmpq_neg(G + 3 * j + i, G + 3 * j + i);
+    }
+    if (m->shared)
+        for (i = 0; i < 3; i++)
+        {
+            fmpq_mul(G + 3 * s->e + i, m->v + i, m->M + i);
+            fmpq_neg(G + 3 * (s->e + 1) + i, G + 3 * s->e + i);
+        }
+    r = _wc_lp_cone3(lam, sep, G, k, g, err);
+    if (r == 1)
+    {
+        _wc_qvec_zero(z, nv);
+        _wc_qvec_set(z + 3, lam, s->e);
+        if (m->shared)
+            for (i = 0; i < 3; i++)
+            {
+                fmpq_sub(z + i, lam + s->e, lam + s->e + 1);
+                fmpq_mul(z + i, z + i, m->v + i);
+            }
+        fmpq_one(z + nv - 1);
+        if (!_wc_lp_rows_hold(s->A, s->rel, z))
+            r = (wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "internal "
+                              "error: a zero-face solution fails"), -1);
+    }
+    for (i = 0; i < 3; i++)
+        fmpq_clear(sep + i);
+    _fmpq_vec_clear(G, 3 * k + 3);
+    _fmpq_vec_clear(lam, k + 1);
+    return r;
+}
+
+int
+_wc_face_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
+               const _wc_stab_model * m, const char * y, const char * x,
+               int rot, const fmpq * g, wc_error_t err)
+{
+    facesys s;
+    slong nv, k;
+    fmpq * z, * y0 = NULL;
+    int r;
+
+    facesys_init(&s, m, y, x, rot, g);
+    nv = 3 + s.e + 1;
+    z = _fmpq_vec_init(nv);
+    if (mult == NULL && rot == 0 && zero_face(m, y))
+        r = zero_face_solve(z, &s, m, g, err);
+    else if (s.e == 0 && mult == NULL)
+    {
+        /* Without a force edge the motion can only be nudot = M^-1 g.  */
+        for (k = 0; k < 3; k++)
+            fmpq_div(z + k, g + k, m->M + k);
+        fmpq_one(z + 3);
+        r = _wc_lp_rows_hold(s.A, s.rel, z);
+    }
+    else
+    {
+        if (mult != NULL)
+            y0 = _fmpq_vec_init(s.rows);
+        r = _wc_lp_motzkin(z, y0, s.A, s.rel, err);
+        if (r == 0 && mult != NULL)
+        {
+            *mult = y0;
+            *nmult = s.rows;
+            y0 = NULL;
+        }
+        if (y0 != NULL)
+            _fmpq_vec_clear(y0, s.rows);
+    }
+    if (r == 1)
+        facesys_motion(nudot, c, &s, m, z);
+    _fmpq_vec_clear(z, nv);
+    facesys_clear(&s);
+    return r;
+}

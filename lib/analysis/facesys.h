@@ -1,0 +1,28 @@
+/* facesys.h -- internal: is there a motion of one moving face for a
+   wrench, or a certificate that there is none.  Private.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.  */
+
+#ifndef WC_FACESYS_H
+#define WC_FACESYS_H
+
+#include <flint/fmpq.h>
+
+#include "core/error.h"
+#include "analysis/stabmodel.h"
+
+/* Solve the face (y, x, rot) for the wrench g: y has one letter per fixel
+   for the rows on nudot (touching s l r n; near u, s (a_in >= 0) or a
+   (a_in < 0)), x the force letters (touching s l r n; near ones carry
+   none), rot != 0 the rotation face (y is then ignored on touching
+   fixels).  Returns 1 with a motion, nudot (3) and forces c (2n); 0
+   without, with the Motzkin multipliers of the face's rows (verify.h) in
+   *mult (malloc'd, *nmult entries) when mult is not NULL; -1 on failure
+   (err set).  */
+int _wc_face_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
+                   const _wc_stab_model * m, const char * y, const char * x,
+                   int rot, const fmpq * g, wc_error_t err);
+
+#endif
