@@ -16,43 +16,57 @@ cd "$top_srcdir" || exit 99
 fails=0
 fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
 
-rank() {
-    case $1 in
-        core) echo 0 ;; exact) echo 1 ;; model) echo 2 ;; analysis) echo 3 ;;
-        float) echo 4 ;; io) echo 5 ;; check) echo 0 ;; *) echo 99 ;;
-    esac
-}
-
-for f in lib/*/*.[ch] lib/*/*.inc; do
-    [ -f "$f" ] || continue
-    layer=${f#lib/}; layer=${layer%%/*}
-    r=$(rank "$layer")
-    [ "$r" = 99 ] && { fail "$f: lib/$layer is not a layer of lib/README"; continue; }
-    for inc in $(sed -n 's/^[ \t]*#[ \t]*include[ \t]*"\([^"]*\)".*/\1/p' "$f"); do
-        case $inc in
-            wrenchcone.h) fail "$f includes the umbrella header" ;;
-            */*) l=${inc%%/*}; ri=$(rank "$l")
-                 if [ "$layer" = check ] && [ "$l" != check ] && [ "$l" != core ]; then
-                     fail "$f includes $inc: lib/check uses lib/core alone"
-                 elif [ "$ri" -gt "$r" ]; then
-                     fail "$f ($layer) includes $inc, a higher layer"
-                 fi ;;
-            *) fail "$f includes \"$inc\": name its layer" ;;
-        esac
-    done
-done
-
-for f in lib/*.[ch] lib/*/*.[ch] src/*.[ch]; do
-    [ -f "$f" ] || continue
-    n=$(wc -l < "$f")
-    [ "$n" -lt 1000 ] || fail "$f has $n lines (the limit is 1,000)"
-    long=$(awk '/^[A-Za-z_].*\(/ { name = $0 }
-                /^\{/ { start = FNR }
-                /^\}/ && start { if (FNR - start - 1 > 150)
-                                    printf "%s (%d lines) ", name, FNR - start - 1
-                                start = 0 }' "$f")
-    [ -z "$long" ] || fail "$f: functions over 150 lines: $long"
-done
+# One awk pass over every file: the include rules, file and function
+# sizes.  Each violation is a line of output.
+problems=$(awk '
+    function rank(l) {
+        if (l == "core" || l == "check") return 0
+        if (l == "exact") return 1
+        if (l == "model") return 2
+        if (l == "analysis") return 3
+        if (l == "float") return 4
+        if (l == "io") return 5
+        return 99
+    }
+    FNR == 1 {
+        if (prev != "" && lines >= 1000)
+            printf "%s has %d lines (the limit is 1,000)\n", prev, lines
+        prev = FILENAME; lines = 0; start = 0
+        split(FILENAME, part, "/")
+        layer = (part[1] == "lib" && part[3] != "") ? part[2] : ""
+        if (layer != "" && rank(layer) == 99)
+            printf "%s: lib/%s is not a layer of lib/README\n", FILENAME, layer
+    }
+    { lines++ }
+    layer != "" && /^[ \t]*#[ \t]*include[ \t]*"/ {
+        inc = $0; sub(/^[^"]*"/, "", inc); sub(/".*/, "", inc)
+        if (inc == "wrenchcone.h")
+            printf "%s includes the umbrella header\n", FILENAME
+        else if (inc !~ /\//)
+            printf "%s includes \"%s\": name its layer\n", FILENAME, inc
+        else {
+            l = inc; sub(/\/.*/, "", l)
+            if (layer == "check" && l != "check" && l != "core")
+                printf "%s includes %s: lib/check uses lib/core alone\n", FILENAME, inc
+            else if (rank(l) > rank(layer))
+                printf "%s (%s) includes %s, a higher layer\n", FILENAME, layer, inc
+        }
+    }
+    /^[A-Za-z_].*\(/ { name = $0 }
+    /^\{/ { start = FNR }
+    /^\}/ && start {
+        if (FNR - start - 1 > 150)
+            printf "%s: %s is %d lines (the limit is 150)\n", FILENAME, name, FNR - start - 1
+        start = 0
+    }
+    END {
+        if (prev != "" && lines >= 1000)
+            printf "%s has %d lines (the limit is 1,000)\n", prev, lines
+    }' lib/*.[ch] lib/*/*.[ch] lib/*/*.inc src/*.[ch])
+if [ -n "$problems" ]; then
+    echo "$problems" | sed 's/^/FAIL: /' >&2
+    fails=$(echo "$problems" | wc -l)
+fi
 
 [ $fails -eq 0 ] || { echo "$fails failure(s)" >&2; exit 1; }
 exit 0

@@ -1245,7 +1245,7 @@ main(void)
 
     test_figure5();
 
-    iters = wctest_iters(48);
+    iters = wctest_iters(32);
     for (i = 0; i < iters; i++)
     {
         wc_problem_t P;
