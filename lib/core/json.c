@@ -755,12 +755,34 @@ check_duplicates(reader * r, const wc_json_node * v, size_t m, int status)
 
 static int parse_value(reader * r, wc_json_node * v, int depth);
 
+/* After an item of an array or object: a ',' (more to come, *done = 0)
+   or the closing bracket (*done = 1), consumed; anything else fails.  */
+static int
+next_item(reader * r, char close, int * done)
+{
+    skip_ws(r);
+    *done = 0;
+    if (r->pos < r->len && r->s[r->pos] == ',')
+    {
+        r->pos++;
+        return WC_OK;
+    }
+    if (r->pos < r->len && r->s[r->pos] == close)
+    {
+        r->pos++;
+        *done = 1;
+        return WC_OK;
+    }
+    return close == ']' ? fail_found(r, "expected ',' or ']', found '%s'")
+                        : fail_found(r, "expected ',' or '}', found '%s'");
+}
+
 /* The array at r->pos ('[') into v; on error v is left clearable.  */
 static int
 parse_array(reader * r, wc_json_node * v, int depth)
 {
     size_t cap = 0;
-    int status = WC_OK;
+    int status = WC_OK, done;
 
     v->type = WC_JSON_ARRAY;
     r->pos++;
@@ -789,19 +811,9 @@ parse_array(reader * r, wc_json_node * v, int depth)
             goto cleanup;
         }
         v->len++;
-        skip_ws(r);
-        if (r->pos < r->len && r->s[r->pos] == ',')
-        {
-            r->pos++;
-            continue;
-        }
-        if (r->pos < r->len && r->s[r->pos] == ']')
-        {
-            r->pos++;
+        status = next_item(r, ']', &done);
+        if (status != WC_OK || done)
             break;
-        }
-        status = fail_found(r, "expected ',' or ']', found '%s'");
-        goto cleanup;
     }
 cleanup:
     shrink(v, v->len);
@@ -813,7 +825,7 @@ static int
 parse_object(reader * r, wc_json_node * v, int depth)
 {
     size_t cap = 0, keys = 0;
-    int status = WC_OK;
+    int status = WC_OK, done;
 
     v->type = WC_JSON_OBJECT;
     r->pos++;
@@ -859,19 +871,9 @@ parse_object(reader * r, wc_json_node * v, int depth)
             goto cleanup;
         }
         v->len++;
-        skip_ws(r);
-        if (r->pos < r->len && r->s[r->pos] == ',')
-        {
-            r->pos++;
-            continue;
-        }
-        if (r->pos < r->len && r->s[r->pos] == '}')
-        {
-            r->pos++;
+        status = next_item(r, '}', &done);
+        if (status != WC_OK || done)
             break;
-        }
-        status = fail_found(r, "expected ',' or '}', found '%s'");
-        goto cleanup;
     }
 cleanup:
     status = check_duplicates(r, v, keys, status);
