@@ -46,7 +46,8 @@ SH_TESTS = \
 	tests/man-lint.sh \
 	tests/cdd-interop.sh \
 	tests/layers.sh \
-	tests/install.sh
+	tests/install.sh \
+	tests/readme-examples.sh
 TESTS += $(C_TESTS) $(SH_TESTS)
 TEST_EXTENSIONS = .sh
 SH_LOG_COMPILER = $(SHELL)

@@ -1,0 +1,58 @@
+#!/bin/sh
+# readme-examples.sh -- every example in the README works as printed.
+#
+# Copyright (C) 2026 the wrenchcone authors.
+# This file is part of wrenchcone, free software under the GNU General
+# Public License, version 2 or (at your option) any later version.
+#
+# In README, a line "    $ ./src/wrenchcone ARGS..." (four spaces) is a
+# command, run by sh from a scratch copy of the top of the tree (data/
+# and the program under test as ./src/wrenchcone), so that files the
+# examples write stay out of the source tree.  The lines after it that
+# are indented by four spaces, up to the next command or the first line
+# that is not indented, are its expected standard output, byte for byte
+# (blank lines at the end of a block do not count).  Each command must
+# exit 0.
+
+: "${WRENCHCONE:?WRENCHCONE is not set}"
+: "${top_srcdir:?top_srcdir is not set}"
+tmp=$(mktemp -d "${TMPDIR:-/tmp}/readme.XXXXXX") || exit 99
+trap 'rm -rf "$tmp"' EXIT
+mkdir "$tmp/top" "$tmp/top/src" "$tmp/ex" || exit 99
+ln -s "$top_srcdir/data" "$tmp/top/data" || exit 99
+ln -s "$WRENCHCONE" "$tmp/top/src/wrenchcone" || exit 99
+
+# Split the README into ex/N.cmd and ex/N.out.
+awk -v dir="$tmp/ex" '
+    function close_block() { if (n) { close(dir "/" n ".cmd"); close(dir "/" n ".out") } }
+    /^    \$ / { close_block(); n++; cmd = substr($0, 7)
+               printf "%s\n", cmd > (dir "/" n ".cmd"); printf "" > (dir "/" n ".out")
+               inblock = 1; blanks = 0; next }
+    inblock && /^$/ { blanks++; next }
+    inblock && /^    / { while (blanks > 0) { print "" > (dir "/" n ".out"); blanks-- }
+                        print substr($0, 5) > (dir "/" n ".out"); next }
+    { inblock = 0; blanks = 0 }
+    END { close_block(); print n + 0 > (dir "/count") }
+' "$top_srcdir/README"
+
+count=$(cat "$tmp/ex/count")
+[ "$count" -ge 10 ] || { echo "FAIL: README shows $count commands, want at least 10" >&2; exit 1; }
+fails=0
+i=1
+while [ "$i" -le "$count" ]; do
+    cmd=$(cat "$tmp/ex/$i.cmd")
+    (cd "$tmp/top" && sh -c "$cmd") > "$tmp/got" 2> "$tmp/err" < /dev/null
+    status=$?
+    if [ "$status" -ne 0 ]; then
+        echo "FAIL: README: \$ $cmd: exit status $status" >&2
+        sed 's/^/    /' "$tmp/err" >&2
+        fails=$((fails + 1))
+    elif ! cmp -s "$tmp/got" "$tmp/ex/$i.out"; then
+        echo "FAIL: README: \$ $cmd: the output differs from the README's:" >&2
+        diff "$tmp/ex/$i.out" "$tmp/got" | sed 's/^/    /' >&2
+        fails=$((fails + 1))
+    fi
+    i=$((i + 1))
+done
+[ $fails -eq 0 ] || { echo "$fails failure(s)" >&2; exit 1; }
+exit 0
