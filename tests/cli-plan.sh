@@ -180,4 +180,38 @@ expect 1 'cannot open' "$W" plan "$tmp/missing.wc"
 "$W" plan "$D/three-fixels.wc" > /dev/full 2> "$tmp/e"
 [ $? -eq 3 ] || fail "plan to /dev/full: want exit 3"
 
+
+# Kinetic friction above static (issue 13): Figure 6 with mu_s = 1/10 and
+# mu_k = 1/2.  A maintained contact may slide, pushing with mu_k, so the
+# plans read m with the wider cone: G_goal is the wedge of friction 1/2,
+# and (-2, -10, -10), which slides the seated disk off fixel 2, is
+# rejected.
+sed 's|^friction 1/5$|friction 1/10 1/2|' "$D/disk-two-fixels-insert.wc" > "$tmp/k.wc"
+"$W" plan --complete --format=json "$tmp/k.wc" -2 -10 -10 > "$tmp/w" 2> "$tmp/e" \
+    || fail "plan mu_k > mu_s wrench: exit $?: $(cat "$tmp/e")"
+python3 - "$tmp/w" <<'PY' || fail "plan mu_k > mu_s wrench JSON"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["in_goal"] is False and d["holding"] == ["ms"], d
+c = d["complete"]
+assert c["accepted"] is False and c["verdict"] == "goal_leaves" and c["states"] == ["11"], c
+assert {"from": "11", "to": "10", "via": "ms"} in c["transitions"], c
+PY
+"$W" plan --complete --format=json "$tmp/k.wc" > "$tmp/p" 2> "$tmp/e" \
+    || fail "plan mu_k > mu_s: exit $?: $(cat "$tmp/e")"
+python3 - "$tmp/p" <<'PY' || fail "plan mu_k > mu_s JSON"
+import json, sys
+d = json.load(open(sys.argv[1]))
+g = d["goal"]
+assert len(g["pieces"]) == 1 and g["pieces"][0]["rays"] == [["-2", "-1", "0"], ["-1", "-2", "0"]], g
+assert d["needed_exact"] == ["ms", "sm", "us"], d
+assert d["complete"]["accepted"] == g and d["complete"]["outside_goal"] is None, d
+assert d["push"]["goal"] == [{"from": ["2", "1"], "to": ["1", "2"],
+                              "from_closed": False, "to_closed": False}], d["push"]
+PY
+"$W" plan --complete "$tmp/k.wc" -2 -10 -10 > "$tmp/t" 2> "$tmp/e" \
+    && grep -q '^  not in G_goal: held by ms$' "$tmp/t" \
+    && grep -q '^  complete plan: rejected: the goal state can lose a contact$' "$tmp/t" \
+    || fail "plan mu_k > mu_s text: $(cat "$tmp/t" "$tmp/e")"
+
 exit $failed

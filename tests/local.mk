@@ -27,7 +27,8 @@ C_TESTS = \
 	tests/t-push \
 	tests/t-stability \
 	tests/t-refplan \
-	tests/t-plan
+	tests/t-plan \
+	tests/t-plansound
 check_PROGRAMS += $(C_TESTS) tests/corpus-check
 LDADD = $(TEST_LIBS)
 tests_corpus_check_LDADD = lib/libwc.la

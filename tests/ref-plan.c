@@ -827,3 +827,149 @@ cleanup:
     free(x);
     return status;
 }
+
+/* ---- the plan model and the rigid-body model ------------------------ */
+
+int
+ref_plan_model(wc_problem_t Q, const wc_problem_t P)
+{
+    slong i;
+
+    if (wc_problem_set(Q, P) != WC_OK)
+        return -1;
+    for (i = 0; i < Q->n; i++)
+        if (fmpq_cmp(Q->fixels[i].mu_k, Q->fixels[i].mu_s) > 0)
+            fmpq_set(Q->fixels[i].mu_s, Q->fixels[i].mu_k);
+    return 0;
+}
+
+/* 6^n LPs a wrench: past 6 fixels no test would wait for it.  */
+#define REF_PLAN_MAX_MODEL_N 6
+
+/* The solution of code (base-4 digits, fixel 0 the lowest) at state S:
+   s n l r on S, s a off S; 0 when an off-S digit is 2 or 3.  */
+static int
+model_mode(char * y, slong code, ulong S, slong n)
+{
+    slong i;
+
+    for (i = 0; i < n; i++, code /= 4)
+    {
+        if ((S >> i) & 1)
+            y[i] = "snlr"[code % 4];
+        else if (code % 4 < 2)
+            y[i] = "sa"[code % 4];
+        else
+            return 0;
+    }
+    y[n] = '\0';
+    return 1;
+}
+
+static int
+model_report(ulong * state, char * mode, ulong S, slong code, slong n)
+{
+    *state = S;
+    model_mode(mode, code, S, n);
+    return 1;
+}
+
+int
+ref_plan_model_breaks(const wc_problem_t P, const fmpq * g, int goal_rule,
+                      ulong * state, char * mode)
+{
+    slong n = P->n, N, code, ncodes, i;
+    ulong full, S, T, L, A, Ap;
+    slong * via = NULL;         /* via[S * N + T]: a solution for S -> T */
+    unsigned char * alive = NULL;
+    char * y = NULL;
+    int status = -1, r, changed;
+
+    if (n < 1 || n > REF_PLAN_MAX_MODEL_N)
+        return -1;
+    N = WORD(1) << n;
+    full = (ulong) N - 1;
+    for (ncodes = 1, i = 0; i < n; i++)
+        ncodes *= 4;
+    via = malloc(sizeof(slong) * (size_t) N * N);
+    alive = calloc((size_t) N, 1);
+    y = malloc(n + 1);
+    if (via == NULL || alive == NULL || y == NULL)
+        goto cleanup;
+    for (i = 0; i < N * N; i++)
+        via[i] = -1;
+
+    for (S = 0; S <= full; S++)
+        for (code = 0; code < ncodes; code++)
+        {
+            if (!model_mode(y, code, S, n))
+                continue;
+            r = ref_wrench_in_cone(P, y, g);
+            if (r < 0)
+                goto cleanup;
+            if (r == 0)
+                continue;
+            for (L = A = 0, i = 0; i < n; i++)
+            {
+                if (((S >> i) & 1) && y[i] == 's')
+                    L |= UWORD(1) << i;
+                if (!((S >> i) & 1) && y[i] == 'a')
+                    A |= UWORD(1) << i;
+            }
+            if (goal_rule && (L != 0 || (S != full && A == 0)))
+            {
+                status = model_report(state, mode, S, code, n);
+                goto cleanup;
+            }
+            for (Ap = A; ; Ap = (Ap - 1) & A)
+            {
+                if (!(Ap == 0 && L == 0 && A != 0)
+                    && via[S * N + ((S & ~L) | Ap)] < 0)
+                    via[S * N + ((S & ~L) | Ap)] = code;
+                if (Ap == 0)
+                    break;
+            }
+        }
+    status = 0;
+    if (goal_rule)
+        goto cleanup;
+
+    /* nothing leaves the goal */
+    for (T = 0; T < full; T++)
+        if (via[full * N + T] >= 0)
+        {
+            status = model_report(state, mode, full, via[full * N + T], n);
+            goto cleanup;
+        }
+    /* no cycle off the goal: peel the states whose every edge leads to
+       the goal or to a peeled state; what stays holds a cycle */
+    for (S = 0; S < full; S++)
+        alive[S] = 1;
+    do
+    {
+        changed = 0;
+        for (S = 0; S < full; S++)
+        {
+            if (!alive[S])
+                continue;
+            for (T = 0; T < full && !(via[S * N + T] >= 0 && alive[T]); T++)
+                ;
+            if (T == full)
+                alive[S] = 0, changed = 1;
+        }
+    }
+    while (changed);
+    for (S = 0; S < full; S++)
+        for (T = 0; alive[S] && T < full; T++)
+            if (alive[T] && via[S * N + T] >= 0)
+            {
+                status = model_report(state, mode, S, via[S * N + T], n);
+                goto cleanup;
+            }
+
+cleanup:
+    free(via);
+    free(alive);
+    free(y);
+    return status;
+}

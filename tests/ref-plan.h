@@ -73,6 +73,30 @@ int ref_plan_goal_empty(const wc_problem_t P, fmpq * witness);
    there is one), and every other state has an out-edge.  4^n LPs.  */
 int ref_plan_complete_accepts(const wc_problem_t P, const fmpq * g);
 
+/* The plan model of P: Q := P with mu_s := max(mu_s, mu_k) at every
+   fixel (Q initialised).  The plans read the m letter as "the contact is
+   maintained, sticking or sliding", so its force may lie in either
+   friction cone; the oracle functions above take P's friction as given
+   and are called on Q to decide the plans.  0, or -1 out of memory.  */
+int ref_plan_model(wc_problem_t Q, const wc_problem_t P);
+
+/* Soundness against the rigid-body model itself.  At a state S (bit i
+   set: fixel i touching, the others near) a solution for g is a mode y
+   with y_i in {s, n, l, r} on S and y_j in {s, a} off S whose Table 2
+   cone, with P's own mu_s for n and mu_k for l and r, holds g (one
+   ref_wrench_in_cone each): every motion the dynamics can start.  Its
+   transitions are those of an outcome (ref_plan_complete_accepts, with
+   n, l, r read as keeping the contact).  Returns 1 when some solution
+   breaks the rule, 0 when none does, -1 on failure or n outside 1..6.
+   goal_rule != 0: G_goal's rule, no solution at any state loses a contact
+   (has s on S) and off the goal every one approaches a fixel (has a off
+   S).  goal_rule == 0: the complete plan's, in the graph of every
+   solution's transitions nothing leaves the goal and no cycle avoids it.
+   On 1, *state and mode (n + 1 bytes) receive the state and one solution
+   that breaks the rule (for a cycle: one giving an edge of it).  */
+int ref_plan_model_breaks(const wc_problem_t P, const fmpq * g,
+                          int goal_rule, ulong * state, char * mode);
+
 #ifdef __cplusplus
 }
 #endif

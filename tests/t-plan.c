@@ -6,10 +6,10 @@
    Public License, version 2 or (at your option) any later version.
 
    The library builds G_goal from the cells of one plane arrangement; the
-   oracle decides membership with one exact LP per needed string (strings
-   it generates itself from SPEC 2.6), emptiness from its own naive cell
-   enumeration over paper-route cones, and the complete plan from one LP
-   per outcome.  They must agree on random wrenches and above all on the
+   oracle, on the plan model (ref_plan_model), decides membership with one
+   exact LP per needed string (strings it generates itself from SPEC 2.6),
+   emptiness from its own naive cell enumeration over paper-route cones,
+   and the complete plan from one LP per outcome.  They must agree on random wrenches and above all on the
    wrenches where the sets change: the rays and face points of every piece
    and of every needed cone, their negatives and small perturbations.  */
 
@@ -378,6 +378,7 @@ check_problem(const wc_problem_t P, const char * what, int complete,
     wc_plan_wrench_t W;
     wc_error_t err;
     wlist L = { 0, 0, NULL };
+    wc_problem_t O;         /* the oracle's: the plan model of P */
     slong i, j, k, nn;
     int guaranteed = eq25_guaranteed(P);
     /* The complete plan's oracle costs 3^n LPs a wrench: every sixth
@@ -385,6 +386,9 @@ check_problem(const wc_problem_t P, const char * what, int complete,
     slong every = wctest_iters(1) >= 3 ? 2 : 6;
 
     complete = complete && P->n <= 3;
+    wc_problem_init(O);
+    if (ref_plan_model(O, P) != 0)
+        fail_g(P, what, NULL, "out of memory");
     wc_plan_init(R);
     wc_plan_wrench_init(W);
     wc_error_init(err);
@@ -409,7 +413,7 @@ check_problem(const wc_problem_t P, const char * what, int complete,
     {
         const fmpq * g = L.g + 3 * i;
         int lib = wc_set_contains(R->goal, g);
-        int ref = ref_plan_goal_contains(P, g);
+        int ref = ref_plan_goal_contains(O, g);
         slong hits = 0;
 
         if (ref < 0)
@@ -427,7 +431,7 @@ check_problem(const wc_problem_t P, const char * what, int complete,
             const char * x = R->T->strings[R->T->needed[j]];
 
             if (wc_cone_contains(R->cones + j, g)
-                != ref_wrench_in_cone(P, x, g))
+                != ref_wrench_in_cone(O, x, g))
                 fail_g(P, what, g, "a needed cone disagrees with the LP");
         }
         if (i % 5 == 0 || (complete && i % every == 0))
@@ -440,7 +444,7 @@ check_problem(const wc_problem_t P, const char * what, int complete,
                 fail_g(P, what, g, "wc_plan_wrench disagrees on G_goal");
             if (complete)
             {
-                acc = ref_plan_complete_accepts(P, g);
+                acc = ref_plan_complete_accepts(O, g);
                 if (acc < 0)
                     fail_g(P, what, g, "the complete oracle failed");
                 if ((W->verdict == WC_PLAN_ACCEPTED) != acc)
@@ -479,7 +483,7 @@ check_problem(const wc_problem_t P, const char * what, int complete,
 
             if (k == 0 ? R->goal_in_strong : R->goal_in_strong_paper)
                 continue;
-            if (ref_plan_goal_contains(P, g) != 1)
+            if (ref_plan_goal_contains(O, g) != 1)
                 fail_g(P, what, g, "eq. 25's witness is not in G_goal");
             ref_strong(&ex, &pa, P, g, what);
             if (k == 0 ? ex : pa)
@@ -491,8 +495,8 @@ check_problem(const wc_problem_t P, const char * what, int complete,
     }
     if (R->has_extra)
     {
-        if (ref_plan_complete_accepts(P, R->extra) != 1
-            || ref_plan_goal_contains(P, R->extra) != 0)
+        if (ref_plan_complete_accepts(O, R->extra) != 1
+            || ref_plan_goal_contains(O, R->extra) != 0)
             fail_g(P, what, R->extra, "the complete plan's extra wrench is "
                    "not accepted outside G_goal");
     }
@@ -515,7 +519,7 @@ check_problem(const wc_problem_t P, const char * what, int complete,
                 continue;
             for (m = 0; m < nn; m++)
                 if (R->exact_needed[m]
-                    && ref_wrench_in_cone(P, R->T->strings[R->T->needed[m]], g)
+                    && ref_wrench_in_cone(O, R->T->strings[R->T->needed[m]], g)
                     == 1)
                     break;
             if (m == nn)
@@ -554,7 +558,7 @@ check_problem(const wc_problem_t P, const char * what, int complete,
                    "covered by the others");
         for (m = 0; m < nn; m++)
             if (R->exact_needed[m]
-                && ref_wrench_in_cone(P, R->T->strings[R->T->needed[m]], g)
+                && ref_wrench_in_cone(O, R->T->strings[R->T->needed[m]], g)
                 != (m == j))
                 fail_g(P, what, g, "the oracle disagrees on a point of a "
                        "kept cone alone");
@@ -600,15 +604,8 @@ check_problem(const wc_problem_t P, const char * what, int complete,
                 fmpq_set(g + 1, d + 0);
                 fmpq_sub(t, P->com + 0, q + 0);
                 fmpq_mul(t, t, g + 0);
-                {
-                    fmpq_t u;
-
-                    fmpq_init(u);
-                    fmpq_sub(u, P->com + 1, q + 1);
-                    fmpq_mul(u, u, g + 1);
-                    fmpq_add(t, t, u);
-                    fmpq_clear(u);
-                }
+                fmpq_sub(g + 2, P->com + 1, q + 1);     /* scratch */
+                fmpq_addmul(t, g + 2, g + 1);
                 if (fmpq_sgn(t) < 0)
                 {
                     fmpq_neg(g + 0, g + 0);
@@ -621,7 +618,7 @@ check_problem(const wc_problem_t P, const char * what, int complete,
                 fmpq_mul(t, q + 1, g + 0);
                 fmpq_sub(g + 2, g + 2, t);
                 fmpq_clear(t);
-                ref = ref_plan_goal_contains(P, g);
+                ref = ref_plan_goal_contains(O, g);
                 for (v = 0; v < R->push_goal->count; v++)
                 {
                     const wc_push_interval_struct * iv = R->push_goal->iv + v;
@@ -650,6 +647,7 @@ check_problem(const wc_problem_t P, const char * what, int complete,
     wc_error_clear(err);
     wc_plan_wrench_clear(W);
     wc_plan_clear(R);
+    wc_problem_clear(O);
 }
 
 /* ---- the critical friction --------------------------------------------- */

@@ -14,9 +14,19 @@
    nonempty L in S the string with s on L, m on S \ L and u off S
    ("contacts L may be lost"), and for every S other than the goal the
    string with m on S and s off S ("no progress").  G_goal is the set of
-   wrenches in the cone of none of them (eq. 21; Table 5 for n = 3).  The
-   letters s and u carry no force and m only mu_s, so every cone depends on
-   the string alone, not on the state it came from, and only on mu_s.
+   wrenches in the cone of none of them (eq. 21; Table 5 for n = 3).
+
+   The plan model.  A contact the string keeps (m) may stick, its force in
+   the static friction cone, or slide, its force on an edge of the kinetic
+   one; m stands for both, so every cone of a plan is computed with
+   mu_s := max(mu_s, mu_k) at every fixel, |c_t| <= max(mu_s, mu_k) c_n for
+   m.  When mu_k <= mu_s that is the paper's static cone and nothing
+   changes; when mu_k > mu_s a sliding contact pushes outside the static
+   cone, and without the wider one a wrench that slides the part away
+   could be accepted.  The letters s, u and a carry no force, so every
+   cone depends on the string alone, not on the state it came from, and
+   on friction only through max(mu_s, mu_k).  (The goal state's stability
+   sets of eq. 25 use the problem's own mu_s and mu_k.)
 
    Redundancy.  Syntactic: a string is redundant when another has at every
    position the same letter or u where it has s (s is more constrained than
@@ -39,8 +49,9 @@
    self-loop, the other states carry no cycle (a self-loop is one) and
    each of them has an edge out.  Then every run reaches the goal and stays
    there, whichever transitions the indeterminate dynamics choose.  The
-   m letter relaxes Coulomb friction to the friction cone (any tangential
-   force within it, whatever the sliding direction), so the transitions
+   m letter relaxes Coulomb friction to the plan model's friction cone
+   (any tangential force within it, whatever the sliding direction, which
+   holds both the sticking and the sliding forces), so the transitions
    are a superset of the dynamics' and acceptance is sound.  Every wrench
    of G_goal is accepted.  */
 
@@ -191,13 +202,13 @@ int wc_plan_wrench(wc_plan_wrench_t W, const wc_problem_t P, const fmpq * g,
                    int complete, wc_error_t err);
 
 /* The friction sweep: the plan of P with mu_s = mu_k = mu at every
-   fixel.  */
+   fixel (the plan model is then P's own friction).  */
 int wc_plan_with_friction(wc_plan_t R, const wc_problem_t P,
                           const fmpq_t mu, wc_error_t err);
 
 /* The critical friction: lo < hi with hi - lo <= width (width > 0),
    G_goal nonempty at mu = lo (lo_witness is a wrench in it) and empty at
-   mu = hi, G_goal shrinking as mu grows (every cone grows with mu_s).  The
+   mu = hi, G_goal shrinking as mu grows (every cone grows with mu).  The
    search starts at [0, 1] and doubles hi while G_goal is nonempty, up to
    max (then found = 0: nonempty at every mu <= max, lo = max with its
    witness).  When G_goal is empty already at mu = 0, found = 1, lo = hi =

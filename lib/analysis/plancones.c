@@ -78,7 +78,13 @@ _wc_plan_pow3(slong n)
     return p;
 }
 
-/* C[k] := W(x[k]) for P, k < count.  */
+/* C[k] := W(x[k]) for the plan model of P, k < count.  A maintained
+   contact (m) either sticks, with its force in the static friction cone,
+   or slides, with its force on an edge of the kinetic one; m stands for
+   both, so the plan model takes the wider cone, |c_t| <= max(mu_s, mu_k)
+   c_n, at every fixel.  The other letters of plan strings (s, u, a) carry
+   no force, so raising mu_s changes the m letter only; when mu_k <= mu_s
+   nothing changes.  */
 static int
 strings_cones(wc_cone_struct * C, char * const * x, const slong * idx,
               slong count, const wc_problem_t P, wc_error_t err)
@@ -90,6 +96,9 @@ strings_cones(wc_cone_struct * C, char * const * x, const slong * idx,
     wc_problem_init(Q);
     if ((status = wc_problem_set(Q, P)) != WC_OK)
         wc_error_set(err, status, NULL, 0, 0, "out of memory");
+    for (k = 0; k < Q->n && status == WC_OK; k++)
+        if (fmpq_cmp(Q->fixels[k].mu_k, Q->fixels[k].mu_s) > 0)
+            fmpq_set(Q->fixels[k].mu_s, Q->fixels[k].mu_k);
     for (k = 0; k < count && status == WC_OK; k++)
         status = string_cone(C + k, Q, x[idx != NULL ? idx[k] : k], err);
     wc_problem_clear(Q);

@@ -29,7 +29,8 @@ void _wc_plan_cones_clear(wc_cone_struct * C, slong count);
 void _wc_plan_outcome_string(char * s, slong x, slong n);
 slong _wc_plan_pow3(slong n);
 
-/* C[k] := W(x) for P and the k-th needed string x of T, or the k-th of the
+/* C[k] := W(x) for the plan model of P (mu_s raised to mu_k where that is
+   larger, plan.h) and the k-th needed string x of T, or the k-th of the
    3^n outcome strings (count of them).  */
 int _wc_plan_needed_cones(wc_cone_struct * C, const wc_plan_strings_t T,
                           const wc_problem_t P, wc_error_t err);
