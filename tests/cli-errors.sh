@@ -167,6 +167,16 @@ usage_error cone-no-arguments cone
 usage_error cone-missing-mode cone "$bad/modes.wc"
 usage_error cone-extra-argument cone "$bad/modes.wc" na na
 
+# The reader's limits (wrenchcone(5)): numbers of at most 1024 bits and
+# polygons of at most 1000 vertices, refused at the offending token; a
+# long number quoted in a message is cut.
+bad_file number-too-big nn \
+    "3:7: number too big in '1e100000' (numerator or denominator over 1024 bits)"
+bad_file polygon-too-many-vertices n \
+    "2:10442: polygon has more than 1000 vertices"
+bad_file point-long ns \
+    "4:7: point (1000000000000000000000000000000000000000000000000000000000000000..., 0) is not on the shape's boundary; give its normal"
+
 if [ "$failures" -ne 0 ]; then
     printf '%s: %d failure(s)\n' "$0" "$failures"
     exit 1

@@ -676,6 +676,208 @@ test_errors(void)
               "unexpected token '1'");
 }
 
+/* ------------------------------------------------------------------ */
+/* Limits of the reader: numbers of at most 1024 bits, polygons of at   */
+/* most 1000 vertices, long numbers cut in messages.                    */
+
+/* A malloc'd "PREFIX<N>SUFFIX" with N = the integer f.  */
+static char *
+text_with(const char * prefix, const fmpz_t f, const char * suffix)
+{
+    char * d = fmpz_get_str(NULL, 10, f);
+    char * t = malloc(strlen(prefix) + strlen(d) + strlen(suffix) + 1);
+
+    strcpy(t, prefix);
+    strcat(t, d);
+    strcat(t, suffix);
+    flint_free(d);
+    return t;
+}
+
+/* The first 64 digits of f followed by "...", as messages cut them.  */
+static char *
+cut64(const fmpz_t f)
+{
+    char * d = fmpz_get_str(NULL, 10, f);
+    char * t = malloc(68);
+
+    memcpy(t, d, 64);
+    strcpy(t + 64, "...");
+    flint_free(d);
+    return t;
+}
+
+static void
+test_number_limits(void)
+{
+    wc_problem_t P;
+    fmpz_t f;
+    char * t, * c, * msg;
+    size_t i, n = 1000000;
+
+    fmpz_init(f);
+    /* the exponents near the old bound, refused at once */
+    PARSE_BAD("fixel 1e100000 0 normal 0 1\n", 1, 7, "number too big in "
+              "'1e100000' (numerator or denominator over 1024 bits)");
+    PARSE_BAD("fixel 0 -2.5e-100000 normal 0 1\n", 1, 9, "number too big in "
+              "'-2.5e-100000' (numerator or denominator over 1024 bits)");
+    PARSE_BAD("mass 1e309\n", 1, 6, "number too big in '1e309' (numerator "
+              "or denominator over 1024 bits)");
+    PARSE_BAD("mass 1e-309\n", 1, 6, "number too big in '1e-309' (numerator "
+              "or denominator over 1024 bits)");
+    /* 1e308 < 2^1024; 0 with any exponent is 0 */
+    if (PARSE_OK(P, "mass 1e308\nfixel 0e100000 0 normal 0 1\n"))
+    {
+        fmpz_set_ui(f, 10);
+        fmpz_pow_ui(f, f, 308);
+        if (!fmpz_equal(fmpq_numref(P->mass), f)
+            || !fmpq_is_zero(P->fixels[0].point + 0))
+            FAIL("1e308 or 0e100000 misread");
+    }
+    wc_problem_clear(P);
+
+    /* 2^1024 - 1 fits, 2^1024 does not, as an integer and as p/q */
+    fmpz_one(f);
+    fmpz_mul_2exp(f, f, 1024);
+    fmpz_sub_ui(f, f, 1);
+    t = text_with("mass 1/", f, "\nfixel 0 0 normal 0 1\n");
+    if (PARSE_OK(P, t) && (!fmpz_is_one(fmpq_numref(P->mass))
+                           || !fmpz_equal(fmpq_denref(P->mass), f)))
+        FAIL("1/(2^1024 - 1) misread");
+    wc_problem_clear(P);
+    free(t);
+    fmpz_add_ui(f, f, 1);
+    c = cut64(f);
+    t = text_with("mass ", f, "\n");
+    msg = malloc(200);
+    sprintf(msg, "number too big in '%s' (numerator or denominator over "
+            "1024 bits)", c);
+    PARSE_BAD(t, 1, 6, msg);
+    free(t);
+    t = text_with("mass 1/", f, "\n");
+    sprintf(msg, "number too big in '1/%.62s...' (numerator or denominator "
+            "over 1024 bits)", c);
+    PARSE_BAD(t, 1, 6, msg);
+    free(t);
+    /* a decimal is judged in lowest terms: 2^-1023 = 5^1023 / 10^1023 fits,
+       2^-1024 does not */
+    fmpz_set_ui(f, 5);
+    fmpz_pow_ui(f, f, 1023);
+    {
+        char * d = fmpz_get_str(NULL, 10, f);
+        size_t nd = strlen(d);
+
+        t = malloc(1100 + nd);
+        strcpy(t, "mass 0.");
+        for (i = 0; i < 1023 - nd; i++)
+            strcat(t, "0");
+        strcat(t, d);
+        strcat(t, "\nfixel 0 0 normal 0 1\n");
+        if (PARSE_OK(P, t)
+            && (!fmpz_is_one(fmpq_numref(P->mass))
+                || fmpz_bits(fmpq_denref(P->mass)) != 1024
+                || fmpz_val2(fmpq_denref(P->mass)) != 1023))
+            FAIL("0.000..5^1023 is not 1/2^1023");
+        wc_problem_clear(P);
+        free(t);
+        flint_free(d);
+    }
+    fmpz_mul_ui(f, f, 5);
+    free(c);
+    {
+        char * d = fmpz_get_str(NULL, 10, f);
+        size_t nd = strlen(d);
+
+        t = malloc(1100 + nd);
+        strcpy(t, "mass 0.");
+        for (i = 0; i < 1024 - nd; i++)
+            strcat(t, "0");
+        strcat(t, d);
+        strcat(t, "\n");
+        sprintf(msg, "number too big in '%.64s...' (numerator or "
+                "denominator over 1024 bits)", t + 5);
+        PARSE_BAD(t, 1, 6, msg);
+        free(t);
+        flint_free(d);
+    }
+    /* p/q is judged as written: 10^400 / 10^399 is refused */
+    fmpz_set_ui(f, 10);
+    fmpz_pow_ui(f, f, 399);
+    fmpz_mul_ui(f, f, 10);
+    t = text_with("com 0 ", f, "/");
+    fmpz_divexact_ui(f, f, 10);
+    c = text_with(t, f, "\n");
+    PARSE_BAD(c, 1, 7, "number too big in '100000000000000000000000000000"
+              "0000000000000000000000000000000000...' (numerator or "
+              "denominator over 1024 bits)");
+    free(t);
+    free(c);
+    /* a 1 MB coordinate: refused at once, and cut in the message */
+    t = malloc(n + 40);
+    strcpy(t, "fixel 0 1");
+    for (i = 9; i < n + 9; i++)
+        t[i] = '0';
+    strcpy(t + i, " normal 0 1\n");
+    PARSE_BAD(t, 1, 9, "number too big in '1000000000000000000000000000000"
+              "000000000000000000000000000000000...' (numerator or "
+              "denominator over 1024 bits)");
+    /* leading zeros are not significant */
+    t[8] = '0';
+    t[n + 8] = '7';
+    if (PARSE_OK(P, t) && !q_is(P->fixels[0].point + 1, "7"))
+        FAIL("000...07 is not 7");
+    wc_problem_clear(P);
+    free(t);
+    /* a point quoted in a message is cut too */
+    fmpz_set_ui(f, 10);
+    fmpz_pow_ui(f, f, 300);
+    t = text_with("shape disk 0 0 1\nfixel ", f, " 0\n");
+    PARSE_BAD(t, 2, 7, "point (100000000000000000000000000000000000000000"
+              "0000000000000000000000..., 0) is not on the shape's boundary; "
+              "give its normal");
+    free(t);
+    free(msg);
+    fmpz_clear(f);
+}
+
+/* "shape polygon" with m vertices (i, i^2), a convex polygon, and a
+   fixel.  */
+static char *
+parabola(slong m)
+{
+    char * t = malloc((size_t) m * 24 + 64);
+    size_t pos;
+    slong i;
+
+    pos = (size_t) sprintf(t, "shape polygon");
+    for (i = 0; i < m; i++)
+        pos += (size_t) sprintf(t + pos, " %ld %ld", (long) i, (long) (i * i));
+    sprintf(t + pos, "\nfixel 1/2 0 normal 0 1\n");
+    return t;
+}
+
+static void
+test_polygon_limit(void)
+{
+    wc_problem_t P;
+    char * t;
+    long col;
+
+    t = parabola(1000);
+    if (PARSE_OK(P, t) && P->shape_len != 2000)
+        FAIL("1000 vertices: shape_len %ld", (long) P->shape_len);
+    wc_problem_clear(P);
+    /* the error is at vertex 1000's x (numbered from 0) */
+    col = (long) strlen(t) - (long) strlen("\nfixel 1/2 0 normal 0 1\n") + 2;
+    free(t);
+    t = parabola(1001);
+    PARSE_BAD(t, 1, col, "polygon has more than 1000 vertices");
+    free(t);
+    t = parabola(5000);
+    PARSE_BAD(t, 1, col, "polygon has more than 1000 vertices");
+    free(t);
+}
+
 /* NUL bytes and long lines come from files too.  */
 static void
 test_binary(void)
@@ -1338,6 +1540,8 @@ main(void)
     test_derived();
     test_lexical();
     test_errors();
+    test_number_limits();
+    test_polygon_limit();
     test_binary();
     test_print();
     test_modes();

@@ -9,12 +9,19 @@
 
 #include <flint/fmpz.h>
 
+#include "core/lexer.h"
 #include "core/problem.h"
 #include "core/text.h"
 
 /* The exponent of a decimal number is bounded so that "1e999999999"
    cannot make us build a gigantic power of ten.  */
 #define WC_MAX_EXPONENT 100000
+
+/* An integer of WC_NUMBER_MAX_DIGITS decimal digits or more (>= 10^(D-1)
+   with D > WC_NUMBER_MAX_DIGITS) has more than WC_NUMBER_MAX_BITS bits:
+   ceil(WC_NUMBER_MAX_BITS log10 2) rounded up, as 0.30103 > log10 2.  */
+#define WC_NUMBER_MAX_DIGITS \
+    ((WC_NUMBER_MAX_BITS * 30103 + 99999) / 100000)
 
 static int
 is_digit(char c)
@@ -175,3 +182,160 @@ cleanup:
     return status;
 }
 
+
+/* The significant digits of the digit string s[a0..a1) s[b0..b1): *lead
+   leading and *trail trailing zeros; all zero when *lead is the length.  */
+static void
+count_zeros(const char * s, size_t a0, size_t a1, size_t b0, size_t b1,
+            size_t * lead, size_t * trail)
+{
+    size_t na = a1 - a0, n = na + (b1 - b0), i;
+
+#define DIGIT(i) ((i) < na ? s[a0 + (i)] : s[b0 + (i) - na])
+    for (i = 0; i < n && DIGIT(i) == '0'; i++)
+        ;
+    *lead = i;
+    for (i = n; i > *lead && DIGIT(i - 1) == '0'; i--)
+        ;
+    *trail = n - i;
+#undef DIGIT
+}
+
+/* f = the digits s[a0..a1) s[b0..b1) without the first lead and the last
+   trail of them.  */
+static int
+set_significant(fmpz_t f, const char * s, size_t a0, size_t a1, size_t b0,
+                size_t b1, size_t lead, size_t trail)
+{
+    size_t na = a1 - a0, n = na + (b1 - b0), lo = lead, hi = n - trail;
+
+    if (lo >= hi)
+    {
+        fmpz_zero(f);
+        return 0;
+    }
+    /* clip [lo, hi) of the joined string to each part */
+    return set_digits(f, s, a0 + (lo < na ? lo : na),
+                      a0 + (hi < na ? hi : na),
+                      b0 + (lo > na ? lo - na : 0),
+                      b0 + (hi > na ? hi - na : 0));
+}
+
+/* A fraction p/q with p and q of at most WC_NUMBER_MAX_BITS bits as
+   written: 0, 1 when too big, -1 out of memory.  The digit count decides
+   before any conversion.  */
+static int
+bounded_fraction(fmpz_t num, fmpz_t den, const char * s,
+                 const wc_numparts * np)
+{
+    size_t lp, tp, lq, tq;
+
+    count_zeros(s, np->a0, np->a1, 0, 0, &lp, &tp);
+    count_zeros(s, np->b0, np->b1, 0, 0, &lq, &tq);
+    if (lq == np->b1 - np->b0)
+    {
+        fmpz_zero(den);         /* division by zero, reported as such */
+        return 0;
+    }
+    if (np->a1 - np->a0 - lp > WC_NUMBER_MAX_DIGITS
+        || np->b1 - np->b0 - lq > WC_NUMBER_MAX_DIGITS)
+        return 1;
+    if (set_significant(num, s, np->a0, np->a1, 0, 0, lp, 0) != 0
+        || set_significant(den, s, np->b0, np->b1, 0, 0, lq, 0) != 0)
+        return -1;
+    return fmpz_bits(num) > WC_NUMBER_MAX_BITS
+           || fmpz_bits(den) > WC_NUMBER_MAX_BITS;
+}
+
+/* A decimal D 10^E, reduced, with numerator and denominator of at most
+   WC_NUMBER_MAX_BITS bits: 0, 1 when too big, -1 out of memory.  With D'
+   = D without its trailing zeros (d digits, not a multiple of 10) and E'
+   = E plus their number, the two bounds below imply the reduced value is
+   too big, so no power of ten beyond 10^WC_NUMBER_MAX_BITS is built:
+   E' >= 0: the numerator D' 10^E' >= 10^(d - 1 + E');
+   E' = -k < 0: the denominator 10^k / gcd(D', 10^k) keeps all of 2^k or
+   all of 5^k, as D' lacks a factor 2 or 5, so it is >= 2^k; the numerator
+   is >= D' / 10^k >= 10^(d - 1 - k).  */
+static int
+bounded_decimal(fmpz_t num, fmpz_t den, const char * s,
+                const wc_numparts * np)
+{
+    size_t lead, trail, n = np->a1 - np->a0 + np->b1 - np->b0;
+    slong d, E;
+
+    count_zeros(s, np->a0, np->a1, np->b0, np->b1, &lead, &trail);
+    fmpz_one(den);
+    if (lead == n)
+    {
+        fmpz_zero(num);
+        return 0;
+    }
+    d = (slong) (n - lead - trail);
+    /* e <= WC_MAX_EXPONENT here; the lengths are those of a text */
+    E = (np->eneg ? -(slong) np->e : (slong) np->e)
+        - (slong) (np->b1 - np->b0) + (slong) trail;
+    if (E >= 0 ? d - 1 + E >= WC_NUMBER_MAX_DIGITS
+        : (-E > WC_NUMBER_MAX_BITS || d - 1 + E >= WC_NUMBER_MAX_DIGITS))
+        return 1;
+    if (set_significant(num, s, np->a0, np->a1, np->b0, np->b1, lead, trail)
+        != 0)
+        return -1;
+    fmpz_set_ui(den, 10);
+    if (E >= 0)
+    {
+        fmpz_pow_ui(den, den, (ulong) E);
+        fmpz_mul(num, num, den);
+        fmpz_one(den);
+    }
+    else
+    {
+        fmpz_t g;
+
+        fmpz_pow_ui(den, den, (ulong) -E);
+        fmpz_init(g);
+        fmpz_gcd(g, num, den);
+        fmpz_divexact(num, num, g);
+        fmpz_divexact(den, den, g);
+        fmpz_clear(g);
+    }
+    return fmpz_bits(num) > WC_NUMBER_MAX_BITS
+           || fmpz_bits(den) > WC_NUMBER_MAX_BITS;
+}
+
+int
+_wc_parse_number_bounded(fmpq_t x, const char * s, size_t len,
+                         wc_error_t err)
+{
+    wc_numparts np;
+    fmpz_t num, den;
+    int status = WC_OK, big;
+    int r = scan_number(&np, s, len);
+
+    if (r != 0)
+        return _wc_error_token(err, WC_EINPUT, NULL, 0, 0, r == 1
+                               ? "bad number '%s'"
+                               : "exponent out of range in '%s'", s,
+                               len);
+    fmpz_init(num);
+    fmpz_init(den);
+    big = np.fraction ? bounded_fraction(num, den, s, &np)
+                      : bounded_decimal(num, den, s, &np);
+    if (big < 0)
+        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
+    else if (big > 0)
+        status = _wc_error_token(err, WC_EINPUT, NULL, 0, 0,
+                                 "number too big in '%s' (numerator or "
+                                 "denominator over 1024 bits)", s, len);
+    else if (fmpz_is_zero(den))
+        status = _wc_error_token(err, WC_EINPUT, NULL, 0, 0,
+                                 "division by zero in '%s'", s, len);
+    else
+    {
+        if (np.neg)
+            fmpz_neg(num, num);
+        fmpq_set_fmpz_frac(x, num, den);
+    }
+    fmpz_clear(num);
+    fmpz_clear(den);
+    return status;
+}

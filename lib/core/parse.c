@@ -244,6 +244,13 @@ parse_shape(wc_parser * ps)
             }
             if (r == 0)
                 break;
+            if (n == 2 * WC_POLYGON_MAX_VERTICES)
+            {
+                /* the simplicity test is quadratic: refuse at once */
+                status = _wc_lx_error(lx, t.col, "polygon has more than "
+                                      "%d vertices", WC_POLYGON_MAX_VERTICES);
+                goto cleanup;
+            }
             if (n == cap)
             {
                 slong ncap = cap == 0 ? 8 : 2 * cap;
@@ -482,23 +489,31 @@ parse_line(wc_parser * ps)
     return parse_shape(ps);
 }
 
+/* "(x, y)", each coordinate cut like quoted input (_wc_show), so that a
+   long number does not fill the message.  */
 static char *
 point_string(const fmpq * p)
 {
     char * x = fmpq_get_str(NULL, 10, p + 0);
     char * y = fmpq_get_str(NULL, 10, p + 1);
-    char * s = malloc(strlen(x) + strlen(y) + 5);
+    char * sx = _wc_show(x, strlen(x), 0);
+    char * sy = _wc_show(y, strlen(y), 0);
+    char * s = NULL;
 
+    if (sx != NULL && sy != NULL)
+        s = malloc(strlen(sx) + strlen(sy) + 5);
     if (s != NULL)
     {
         strcpy(s, "(");
-        strcat(s, x);
+        strcat(s, sx);
         strcat(s, ", ");
-        strcat(s, y);
+        strcat(s, sy);
         strcat(s, ")");
     }
     flint_free(x);
     flint_free(y);
+    free(sx);
+    free(sy);
     return s;
 }
 

@@ -7,6 +7,8 @@
 
    Points are two consecutive fmpq.  */
 
+#include <stdlib.h>
+
 #include "core/polygon.h"
 
 /* sign of (b - a) x (c - a) */
@@ -104,10 +106,72 @@ _wc_on_segment(const fmpq * p, const fmpq * a, const fmpq * b)
     return orient(a, b, p) == 0 && in_box(p, a, b);
 }
 
+/* box[4 a ..] := the smaller x, larger x, smaller y, larger y of edge a
+   (pointers into v).  */
+static void
+edge_boxes(const fmpq ** box, const fmpq * v, slong m)
+{
+    slong a;
+    int k;
+
+    for (a = 0; a < m; a++)
+        for (k = 0; k < 2; k++)
+        {
+            const fmpq * p = v + 2 * a + k, * q = v + 2 * ((a + 1) % m) + k;
+            int lt = fmpq_cmp(p, q) < 0;
+
+            box[4 * a + 2 * k] = lt ? p : q;
+            box[4 * a + 2 * k + 1] = lt ? q : p;
+        }
+}
+
+/* The closed boxes of edges a and b are disjoint, so the edges are.  */
+static int
+boxes_apart(const fmpq ** box, slong a, slong b)
+{
+    int k;
+
+    for (k = 0; k < 4; k += 2)
+        if (fmpq_cmp(box[4 * a + k], box[4 * b + k + 1]) > 0
+            || fmpq_cmp(box[4 * b + k], box[4 * a + k + 1]) > 0)
+            return 1;
+    return 0;
+}
+
+/* The first pair of non-adjacent edges (a < b) that meet, in the order
+   of the loops: a fault with *i, *j set, or WC_POLYGON_SIMPLE.  box may
+   be NULL (out of memory): every pair is then tested in full.  */
+static int
+edges_meet(slong * i, slong * j, const fmpq * v, slong m, const fmpq ** box)
+{
+    slong a, b;
+
+    for (a = 0; a < m; a++)
+        for (b = a + 2; b < m; b++)
+        {
+            int k;
+
+            if ((a == 0 && b == m - 1)
+                || (box != NULL && boxes_apart(box, a, b)))
+                continue;
+            k = segments_meet(v + 2 * a, v + 2 * ((a + 1) % m),
+                              v + 2 * b, v + 2 * ((b + 1) % m));
+            if (k != 0)
+            {
+                *i = a;
+                *j = b;
+                return k == 2 ? WC_POLYGON_CROSS : WC_POLYGON_TOUCH;
+            }
+        }
+    return WC_POLYGON_SIMPLE;
+}
+
 int
 _wc_polygon_check(int * turn, slong * i, slong * j, const fmpq * v, slong m)
 {
     slong a, b;
+    const fmpq ** box;
+    int fault;
 
     *turn = 0;
     for (a = 0; a < m; a++)
@@ -128,23 +192,16 @@ _wc_polygon_check(int * turn, slong * i, slong * j, const fmpq * v, slong m)
         }
     }
     /* Adjacent edges cannot overlap now that no three consecutive vertices
-       are collinear; test every pair of non-adjacent edges.  */
-    for (a = 0; a < m; a++)
-        for (b = a + 2; b < m; b++)
-        {
-            int k;
-
-            if (a == 0 && b == m - 1)
-                continue;
-            k = segments_meet(v + 2 * a, v + 2 * ((a + 1) % m),
-                              v + 2 * b, v + 2 * ((b + 1) % m));
-            if (k != 0)
-            {
-                *i = a;
-                *j = b;
-                return k == 2 ? WC_POLYGON_CROSS : WC_POLYGON_TOUCH;
-            }
-        }
+       are collinear; test every pair of non-adjacent edges, quadratic in m
+       (the reader allows at most WC_POLYGON_MAX_VERTICES), the pairs with
+       disjoint boxes at the cost of a few comparisons.  */
+    box = malloc((size_t) m * 4 * sizeof(const fmpq *));
+    if (box != NULL)
+        edge_boxes(box, v, m);
+    fault = edges_meet(i, j, v, m, box);
+    free(box);
+    if (fault != WC_POLYGON_SIMPLE)
+        return fault;
     /* A simple polygon has nonzero area; kept as a last guard.  */
     *turn = polygon_orientation(v, m);
     return *turn == 0 ? WC_POLYGON_ZERO_AREA : WC_POLYGON_SIMPLE;

@@ -107,6 +107,17 @@ int wc_problem_check(const wc_problem_t P, wc_error_t err);
    the token is).  */
 int wc_parse_number(fmpq_t x, const char * s, size_t len, wc_error_t err);
 
+/* Limits of the problem file reader, so that no command's cost grows
+   beyond bounds with the size of the numbers or of the shape (see
+   wrenchcone(5)).  The numerator and denominator of every number in a
+   problem file fit in WC_NUMBER_MAX_BITS bits (for p/q those written, for
+   a decimal those of its value in lowest terms); wc_parse_number itself
+   has no such bound.  A polygon has at most WC_POLYGON_MAX_VERTICES
+   vertices.  The message of a number over the bound says 1024: change it
+   in number.c with the value.  */
+#define WC_NUMBER_MAX_BITS 1024
+#define WC_POLYGON_MAX_VERTICES 1000
+
 #ifdef __cplusplus
 }
 #endif
