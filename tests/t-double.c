@@ -44,6 +44,12 @@
 #include "core/random.h"
 #include "testutil.h"
 
+#define BIG "179769313486231590772930519078902473361797697894230657273430" \
+    "081157732675805500963132708477322407536021120113879871393357658789" \
+    "768814416622492847430639474124377767893424865485276302219601246094" \
+    "119453082952085005768838150682342462881473913110540827237163350510" \
+    "684586298239947245938479716304835356329624224137215"
+
 static const char section4[] =
     "# data/section4.wc\n"
     "name \"Section 4 example\"\n"
@@ -344,18 +350,20 @@ check_corners(void)
         wctest_fail("tolerance 0 was refused");
     wc_problem_clear(P);
 
-    /* Beyond double range: a refusal, never inf or NaN fed to cddlib.  */
+    /* Beyond double range: a refusal, never inf or NaN fed to cddlib.
+       BIG is 2^1024 - 1, the largest integer a problem file may hold
+       (1,024 bits), and above the largest double.  */
     wc_problem_init(P);
-    parse(P, "fixel 0 0 normal 1e400 1\nfixel 1 0 normal -1 0\n");
+    parse(P, "fixel 0 0 normal " BIG " 1\nfixel 1 0 normal -1 0\n");
     if (wc_wrench_cone_paper_double(F, P, "nn", WC_FCONE_EPS, err) != WC_EINPUT
         || !F->empty)
-        wctest_fail("a normal of 1e400 did not give WC_EINPUT");
+        wctest_fail("a normal of 2^1024 - 1 did not give WC_EINPUT");
     wc_problem_clear(P);
-    /* A mass of 1e400 rounds 1/m to 0: a float answer, not an error.  */
+    /* A mass of 2^1024 - 1 rounds 1/m to 0: a float answer, not an error.  */
     wc_problem_init(P);
-    parse(P, "mass 1e400\nfixel 0 0 normal 0 1\n");
+    parse(P, "mass " BIG "\nfixel 0 0 normal 0 1\n");
     if (wc_wrench_cone_paper_double(F, P, "m", WC_FCONE_EPS, err) != WC_OK)
-        wctest_fail("a mass of 1e400 failed: %s", err->message);
+        wctest_fail("a mass of 2^1024 - 1 failed: %s", err->message);
     wc_problem_clear(P);
 
     wc_error_clear(err);
