@@ -8,7 +8,7 @@
    Results go to stdout, only after the whole answer is computed;
    diagnostics go to stderr as "wrenchcone: FILE:LINE:COL: message".
    Exit status: 0 success, 1 bad input, 2 bad usage, 3 internal or I/O
-   failure, 4 a check found a disagreement (SPEC 4).  */
+   failure, 4 a check found a disagreement (wrenchcone(1)).  */
 
 #ifndef WC_CLI_H
 #define WC_CLI_H

@@ -25,7 +25,7 @@ const char cmd_cone_usage[] =
     "  near fixels:     s separate, a approach, u unconstrained.\n"
     "\n"
     "Options:\n"
-    "  --format=FMT     text (default), json (SPEC 4.1), cdd (cddlib .ine then\n"
+    "  --format=FMT     text (default), json (see wrenchcone(1)), cdd (cddlib .ine then\n"
     "                   .ext with rationals), ine, or ext\n"
     "  --method=METHOD  direct (default; Minkowski sum in R^3) or paper (the\n"
     "                   paper's Section 5 route); both print the same bytes\n"

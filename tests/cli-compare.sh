@@ -1,5 +1,5 @@
 #!/bin/sh
-# cli-compare.sh -- `wrenchcone compare` end to end (SPEC 4): the exact
+# cli-compare.sh -- `wrenchcone compare` end to end (wrenchcone(1)): the exact
 # cone of the paper's Section 4 example, written by `wrenchcone cone` as
 # cdd .ext and .ine and converted to decimals (each row divided by its
 # length, printed with %.17g: no longer exact), is within the default

@@ -1,6 +1,6 @@
 #!/bin/sh
 # cli-errors.sh -- bad input gives exit status 1, nothing on stdout and one
-# exact diagnostic on stderr; bad usage gives exit status 2 (SPEC 3, 4).
+# exact diagnostic on stderr; bad usage gives exit status 2 (wrenchcone(1), wrenchcone(5)).
 #
 # Copyright (C) 2026 the wrenchcone authors.
 # This file is part of wrenchcone, free software under the GNU General
@@ -80,7 +80,7 @@ usage_error() {
     fi
 }
 
-# Every error class of SPEC 3.
+# Every error class of wrenchcone(5).
 bad_file unknown-keyword n "3:1: unknown keyword 'mas'"
 bad_file bad-number nn "4:7: bad number 'x1'"
 bad_file division-by-zero n "2:10: division by zero in '1/0'"

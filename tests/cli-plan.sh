@@ -1,7 +1,7 @@
 #!/bin/sh
 # cli-plan.sh -- `wrenchcone plan` and `wrenchcone sweep` end to end: the
 # paper's Figure 6 disk (eq. 21) and a three-fixel block (Table 5), the
-# JSON contract of SPEC 4.1, a wrench only the complete plan accepts, the
+# JSON contract of wrenchcone(1), JSON, a wrench only the complete plan accepts, the
 # friction sweep and the critical bracket, and bad input and usage.
 #
 # Copyright (C) 2026 the wrenchcone authors.

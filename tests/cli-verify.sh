@@ -1,5 +1,5 @@
 #!/bin/sh
-# cli-verify.sh -- `wrenchcone verify` end to end (SPEC 4): certificates
+# cli-verify.sh -- `wrenchcone verify` end to end (wrenchcone(1)): certificates
 # worked out by hand hold (exit 0), tampered ones do not (exit 4, the
 # reason on stdout), malformed ones are bad input (exit 1, one located
 # diagnostic on stderr, nothing on stdout); and every certificate that
@@ -320,7 +320,7 @@ else
                 fi
             done
         done
-        # SPEC 5: Figure 5's feasible modes
+        # the paper's reference results: Figure 5's feasible modes
         if [ "${spec%:*}" = disk-two-fixels ] &&
             [ "$feasible_modes" != " ss sl sr sn ls ll rs rr ns nn" ]; then
             fail "figure 5 modes" "feasible:$feasible_modes"

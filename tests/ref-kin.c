@@ -1,4 +1,4 @@
-/* ref-kin.c -- the test oracle for kinematic feasibility (SPEC 2.1).
+/* ref-kin.c -- the test oracle for kinematic feasibility (wrenchcone(1), MODES).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General

@@ -1,4 +1,4 @@
-/* ref-kin.h -- the test oracle for kinematic feasibility (SPEC 2.1, paper
+/* ref-kin.h -- the test oracle for kinematic feasibility (wrenchcone(1) MODES, paper
    Table 1): one exact LP per mode, and brute force over all mode strings.
 
    Copyright (C) 2026 the wrenchcone authors.

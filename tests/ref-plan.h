@@ -1,4 +1,4 @@
-/* ref-plan.h -- the test oracle for insertion plans (SPEC 2.6, paper
+/* ref-plan.h -- the test oracle for insertion plans (wrenchcone(1), Insertion plans, paper
    Sections 8 and 9): the constraint strings, the goal set G_goal and the
    complete transition-graph model, all by brute force.
 

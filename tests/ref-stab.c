@@ -13,7 +13,7 @@
    row, an infeasible one with a Farkas combination of the rows that is
    summed up again.  When a check fails the answer is -1, never a guess.
 
-   Every question is an LP over (nudot, c), written here from SPEC 2.2
+   Every question is an LP over (nudot, c), written here from wrenchcone(1), MODES
    and 2.5 (nudot the acceleration, c = (c_1n .. c_nn, c_1t .. c_nt) the
    forces, a = J^T nudot):
 
@@ -51,7 +51,7 @@
    on nudot alone (s read as a_in > 0 for motions, as a_in >= 0 for
    Table 2 strings), is a relaxation of the LP for any g, so a pattern it
    rejects is rejected for every g (for Table 2 strings this is exactly
-   "W(x) is empty", SPEC 2.3).  And for the last wrench, whether W(x)
+   "W(x) is empty", wrenchcone(1), MODES).  And for the last wrench, whether W(x)
    with u on the near fixels holds it: ref_in_paper_union asks exactly
    that, and ref_modes_holding needs the refinements (s or a on each near
    fixel, subsets of it) only where it does.  The memo is keyed by the

@@ -9,7 +9,7 @@
    arrangement, no cone, no face enumeration.  Exponential on purpose
    (4^t LPs for t touching fixels); for t <= 4 or so.
 
-   The model (SPEC 2.5).  At zero velocity, for a wrench g, a solution is
+   The model (wrenchcone(1), stability).  At zero velocity, for a wrench g, a solution is
    (nudot, c) with M nudot = J c + g, near fixels carrying no force, and
    for every touching fixel i, with a = J^T nudot:
      0 <= c_in, a_in >= 0, c_in a_in = 0;

@@ -1,5 +1,5 @@
 /* t-model.c -- the paper's Section 4 example, exactly: J, A, B, C (eq. 12),
-   the paper route's K and P, and the cone W(na) by both routes (SPEC 5).
+   the paper route's K and P, and the cone W(na) by both routes (the paper's reference results).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -142,7 +142,7 @@ main(void)
     expect_mat("B", m, 4, 3, B);
     fmpq_mat_clear(m);
 
-    /* Both routes: the SPEC 5 generators, facets, faces and strictness,
+    /* Both routes: the published generators, facets, faces and strictness,
        byte for byte.  */
     for (method = 0; method < 2; method++)
     {
@@ -208,7 +208,7 @@ main(void)
         wc_problem_clear(Q);
     }
 
-    /* Scaling a normal by a positive rational changes nothing (SPEC 2).  */
+    /* Scaling a normal by a positive rational changes nothing.  */
     fmpq_set_si(P->fixels[0].normal + 1, 7, 3);
     fmpq_set_si(P->fixels[1].normal + 0, -5, 1);
     wc_cone_init(Wd, 3);

@@ -66,7 +66,7 @@ paper_disk(wc_problem_t P, wc_fixel_state second)
 }
 
 /* 1 when a and b are at one point with normals pointing the same way
-   (not a valid problem, SPEC 3).  */
+   (not a valid problem, wrenchcone(5)).  */
 static int
 same_contact(const wc_fixel_struct * a, const wc_fixel_struct * b)
 {
@@ -102,7 +102,7 @@ rand_dir(fmpq * d)
     while (fmpq_is_zero(d + 0) && fmpq_is_zero(d + 1));
 }
 
-/* Two fixels at one point must not push the same way (SPEC 3): turn the
+/* Two fixels at one point must not push the same way (wrenchcone(5)): turn the
    later one's normal to a fresh direction until they differ.  */
 static void
 separate_contacts(wc_problem_t P)

@@ -518,7 +518,7 @@ test_lexical(void)
 static void
 test_errors(void)
 {
-    /* each error class of SPEC 3, with its location */
+    /* each error class of wrenchcone(5), with its location */
     PARSE_BAD("mas 1\nfixel 0 0 normal 0 1\n", 1, 1, "unknown keyword 'mas'");
     PARSE_BAD("  Mass 1\n", 1, 3, "unknown keyword 'Mass'");
     PARSE_BAD("fixel 0 0 normal 0 1\n\"mass\" 1\n", 2, 1,

@@ -7,7 +7,7 @@
 
    The library builds G_goal from the cells of one plane arrangement; the
    oracle, on the plan model (ref_plan_model), decides membership with one
-   exact LP per needed string (strings it generates itself from SPEC 2.6),
+   exact LP per needed string (strings it generates itself from wrenchcone(1), Insertion plans),
    emptiness from its own naive cell enumeration over paper-route cones,
    and the complete plan from one LP per outcome.  They must agree on random wrenches and above all on the
    wrenches where the sets change: the rays and face points of every piece

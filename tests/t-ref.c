@@ -185,8 +185,8 @@ check_section4(int variant)
 }
 
 /* Figure 5's disk, both fixels touching, friction 1: among the strings
-   over s l r n exactly ss sl sr sn ls rs ns ll rr nn are feasible (SPEC
-   5; at rest the acceleration-level test agrees with Table 1 here).  */
+   over s l r n exactly ss sl sr sn ls rs ns ll rr nn are feasible (the
+   paper's Figure 5; at rest the acceleration-level test agrees with Table 1 here).  */
 static void
 check_figure5(void)
 {

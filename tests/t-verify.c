@@ -1117,7 +1117,7 @@ test_fuzz(void)
 #define FIG5K BODY FIX1("1", "1/2") ", " FIX2("touching", "1", "1/2") "]}"
 
 /* g = (0, -1, 0) on FIG5: weakly stable with c_1n = 1; strongly stable.
-   The moving faces are Table 1's feasible modes but nn (SPEC 5): ss sl sr
+   The moving faces are Table 1's feasible modes but nn (the paper's reference results): ss sl sr
    sn ls rs ns ll rr.  Each face's multipliers are y (on the three
    equality rows, which read M nudot - sum lambda_j w_j - tau g = 0), then
    the fixel rows' (f), then y . w_j (the lambda rows), then y . g (the

@@ -466,7 +466,7 @@ scaled_copy(fmpq * d, const fmpq * v, slong neg, slong den)
 }
 
 /* 1 when fixels a and b are at the same point with normals pointing the
-   same way: an invalid problem (SPEC 3).  */
+   same way: an invalid problem (wrenchcone(5)).  */
 static int
 same_contact(const wc_fixel_struct * a, const wc_fixel_struct * b)
 {

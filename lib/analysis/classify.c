@@ -1,5 +1,5 @@
 /* classify.c -- one wrench: weak and strong stability (paper Section 7,
-   SPEC 2.5) by exact LPs, the motions, and the modes holding it.
+   wrenchcone(1), stability) by exact LPs, the motions, and the modes holding it.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General

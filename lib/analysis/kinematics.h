@@ -1,4 +1,4 @@
-/* kinematics.h -- kinematic feasibility of contact modes (SPEC 2.1, paper
+/* kinematics.h -- kinematic feasibility of contact modes (wrenchcone(1) MODES, paper
    Table 1), with certificates.
 
    Copyright (C) 2026 the wrenchcone authors.

@@ -12,7 +12,7 @@
    of b = K^F K e_strict is <= 0, so W = { F_i g <= 0 where b_i = 0,
    F_i g < 0 where b_i < 0 }: the paper's "k -> 0", decided exactly.
 
-   Slips of the paper corrected here (SPEC 2.2): S's signs come from
+   Slips of the paper corrected here (wrenchcone(1), MODES): S's signs come from
    Table 2 (l: c_t = -mu_k c_n, r: c_t = +mu_k c_n); R divides by mu_s, so
    a rolling or maintained fixel with mu_s = 0 gets c_t = 0 instead.  */
 

@@ -1,4 +1,4 @@
-/* plan.h -- sensorless insertion plans (paper Sections 8 and 9, SPEC 2.6).
+/* plan.h -- sensorless insertion plans (paper Sections 8 and 9, wrenchcone(1), Insertion plans).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -88,7 +88,7 @@ typedef enum
 }
 wc_plan_verdict;
 
-/* The insertion strings of n fixels, as SPEC 2.6 generates them.  */
+/* The insertion strings of n fixels, as wrenchcone(1), Insertion plans generates them.  */
 typedef struct
 {
     slong n;
@@ -231,7 +231,7 @@ void wc_critical_clear(wc_critical_t C);
 int wc_plan_critical(wc_critical_t C, const wc_problem_t P,
                      const fmpq_t width, const fmpq_t max, wc_error_t err);
 
-/* Printing (planprint.c).  JSON as SPEC 4.1 with extra keys: "fixels",
+/* Printing (planprint.c).  JSON as wrenchcone(1), JSON with extra keys: "fixels",
    "states" (each state's strings, Table 5), "redundant" (each
    syntactically redundant string with one containing it),
    "goal_in_strong_paper", "goal_not_strong" and "goal_not_strong_paper"

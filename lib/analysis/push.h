@@ -1,4 +1,4 @@
-/* push.h -- pushing regions of a frictionless finger (SPEC 2.7).
+/* push.h -- pushing regions of a frictionless finger (wrenchcone(1), push regions).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General

@@ -1,5 +1,5 @@
 /* stability.c -- the weakly and strongly stable wrench sets (paper
-   Section 7, SPEC 2.5), exactly, as pieces of the arrangement of their
+   Section 7, wrenchcone(1), stability), exactly, as pieces of the arrangement of their
    cones' planes, and the push regions of each.
 
    Copyright (C) 2026 the wrenchcone authors.

@@ -1,5 +1,5 @@
 /* stability.h -- weak and strong stability of a fixtured workpiece
-   (paper Section 7, SPEC 2.5), one wrench at a time or as exact sets.
+   (paper Section 7, wrenchcone(1), stability), one wrench at a time or as exact sets.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -14,7 +14,7 @@
    a_it < 0) or n (a_in = 0, a_it = 0), where a = J^T nudot; u for a near
    fixel (no force, no constraint).  The strings that occur are those of
    the faces of the arrangement of the touching fixels' planes
-   J_k . nudot = 0 (SPEC 2.5), found with wc_modes_enumerate: O(n^2) of
+   J_k . nudot = 0 (wrenchcone(1), stability), found with wc_modes_enumerate: O(n^2) of
    them, never 4^n.  The string n..n holds nudot != 0 only when every
    touching fixel has the same contact point (rotation about it); it then
    counts as two faces, rotating either way.

@@ -1,5 +1,5 @@
 /* wrench.h -- the wrench cone W(x) of a contact mode, by two routes
-   (SPEC 2.2, 2.3).
+   (wrenchcone(1), MODES).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General

@@ -1,4 +1,4 @@
-/* feasible.c -- mode-feasibility certificates (paper Table 1, SPEC 2.1):
+/* feasible.c -- mode-feasibility certificates (paper Table 1, wrenchcone(1), MODES):
    the rows a mode implies, and the witness or the Motzkin multipliers.
 
    Copyright (C) 2026 the wrenchcone authors.

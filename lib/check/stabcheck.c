@@ -1,4 +1,4 @@
-/* stabcheck.c -- checking a strong-stability certificate (SPEC 2.5): the
+/* stabcheck.c -- checking a strong-stability certificate (wrenchcone(1), stability): the
    weak claim (static forces or a separator), the motion of a weakly but
    not strongly stable wrench; the faces are in facecheck.c.
 

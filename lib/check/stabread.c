@@ -1,4 +1,4 @@
-/* stabread.c -- reading a strong-stability certificate (SPEC 2.5): the
+/* stabread.c -- reading a strong-stability certificate (wrenchcone(1), stability): the
    problem, the wrench, the weak claim, the motion or the faces.
 
    Copyright (C) 2026 the wrenchcone authors.

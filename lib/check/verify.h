@@ -19,7 +19,7 @@
    (a x b = a_x b_y - a_y b_x):
      J_n = (n_x, n_y, r x n),  J_t = (t_x, t_y, r x t).
 
-   1. "kind": "mode-feasibility" (paper Table 1, SPEC 2.1)
+   1. "kind": "mode-feasibility" (paper Table 1, wrenchcone(1), MODES)
      "mode": "ln"                        Table 1 letters, one per fixel
      "feasible": true | false
      "witness": [vx, vy, w]              when feasible
@@ -38,7 +38,7 @@
        y_k >= 0 on > and >= rows, y_k > 0 on at least one > row (then, by
        Motzkin's transposition theorem, no twist satisfies the rows).
 
-   2. "kind": "strong-stability" (SPEC 2.5; exact semantics)
+   2. "kind": "strong-stability" (wrenchcone(1), stability; exact semantics)
      "problem": {"mass": m, "inertia": I, "com": [x, y],
                  "fixels": [{"point": [x, y], "normal": [x, y],
                              "state": "touching" | "near",

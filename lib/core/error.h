@@ -14,7 +14,7 @@ extern "C" {
 #endif
 
 /* Every library function that can fail returns one of these.  They equal
-   the exit statuses of the wrenchcone program (SPEC 4).  An empty cone or
+   the exit statuses of the wrenchcone program (wrenchcone(1)).  An empty cone or
    an infeasible mode is an answer, never an error.  */
 typedef enum
 {

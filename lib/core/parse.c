@@ -4,7 +4,7 @@
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   SPEC section 3.  The parser reads the file line by line with a lazy
+   wrenchcone(5).  The parser reads the file line by line with a lazy
    tokenizer, so the first error in file order is the one reported.  Checks
    that need the whole file (normals derived from a shape given later, two
    fixels alike, no fixel at all) run after the last line; when a line is

@@ -4,7 +4,7 @@
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   SPEC sections 2 and 3.  All numbers are exact rationals (fmpq).  */
+   wrenchcone(1) and wrenchcone(5).  All numbers are exact rationals (fmpq).  */
 
 #ifndef WC_PROBLEM_H
 #define WC_PROBLEM_H
@@ -71,7 +71,7 @@ void wc_problem_clear(wc_problem_t P);
 /* Parse the problem text (len bytes, need not be NUL-terminated) read from
    the file called file.  On success returns WC_OK and fills P (which must
    be freshly initialised).  On a malformed file returns WC_EINPUT and sets
-   err to the first error, located at its line and column (SPEC 3); P is
+   err to the first error, located at its line and column (wrenchcone(5)); P is
    then left initialised but unspecified.  */
 int wc_problem_parse(wc_problem_t P, const char * text, size_t len,
                      const char * file, wc_error_t err);

@@ -133,7 +133,7 @@ same_direction(const fmpq * a, const fmpq * b)
 }
 
 /* 1 when fixel i repeats the point and normal direction of an earlier
-   one: an input error (SPEC 3) that the generator must never make.  */
+   one: an input error (wrenchcone(5)) that the generator must never make.  */
 int
 _wc_random_repeats(const wc_problem_struct * P, slong i)
 {

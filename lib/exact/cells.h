@@ -1,5 +1,5 @@
 /* cells.h -- the cells of a central arrangement of planes in R^3, and
-   sets of wrenches as pairwise disjoint NNC pieces (SPEC 2.5).
+   sets of wrenches as pairwise disjoint NNC pieces (wrenchcone(1), stability).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General

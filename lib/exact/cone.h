@@ -1,4 +1,4 @@
-/* cone.h -- exact not-necessarily-closed (NNC) polyhedral cones (SPEC 2.4).
+/* cone.h -- exact not-necessarily-closed (NNC) polyhedral cones (doc/design.md).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General

@@ -1,5 +1,5 @@
 /* compare.h -- check a cone computed by someone else's (floating-point)
-   code against the exact one (SPEC 4, `wrenchcone compare`).
+   code against the exact one (wrenchcone(1), `wrenchcone compare`).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -144,7 +144,7 @@ void wc_foreign_clear(wc_foreign_t F);
      A block with no rows at all is the empty set; rays without the apex
      row are read as the cone they generate.  Zero rays are dropped.
    JSON: the output of `wrenchcone cone --format=json` ({"mode", "cone"})
-   or a bare CONE object (SPEC 4.1), exact ("p/q" strings) or float (JSON
+   or a bare CONE object (wrenchcone(1), JSON), exact ("p/q" strings) or float (JSON
    numbers, "arith": "double"); numbers may be either, as strings or
    JSON numbers.  "empty" is required; a nonempty cone needs "rays" (with
    optional "lines") or "inequalities" (with optional "equalities"), and

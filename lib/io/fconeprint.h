@@ -19,7 +19,7 @@ extern "C" {
 typedef enum
 {
     WC_FCONE_TEXT = 0,  /* for people; a header says the numbers are floats */
-    WC_FCONE_JSON = 1,  /* the CONE object of SPEC 4.1 where it makes sense */
+    WC_FCONE_JSON = 1,  /* the CONE object of wrenchcone(1), JSON where it makes sense */
     WC_FCONE_INE = 2,   /* cddlib .ine of the closure, real numbers */
     WC_FCONE_EXT = 3,   /* cddlib .ext of the closure, real numbers */
     WC_FCONE_CDD = 4    /* .ine then .ext */

@@ -1,4 +1,4 @@
-/* planprint.c -- text and JSON for plan and sweep (SPEC 4.1).
+/* planprint.c -- text and JSON for plan and sweep (wrenchcone(1), JSON).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General

@@ -1,4 +1,4 @@
-/* print.h -- writers: readable text, canonical JSON (SPEC 4.1), cddlib.
+/* print.h -- writers: readable text, canonical JSON (wrenchcone(1), JSON), cddlib.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -32,7 +32,7 @@ void wc_fprint_qvec(FILE * out, const fmpq * v, slong len, int json);
 /* s as a JSON string literal, with quotes and escapes.  */
 void wc_fprint_json_string(FILE * out, const char * s);
 
-/* The CONE object of SPEC 4.1, on one line, no newline.  */
+/* The CONE object of wrenchcone(1), JSON, on one line, no newline.  */
 int wc_cone_fprint_json(FILE * out, const wc_cone_t C);
 
 /* A readable description of C, each line starting with indent.  */
@@ -60,7 +60,7 @@ int wc_modes_fprint(FILE * out, const wc_modes_t M, int json, int witness);
 int wc_certificate_fprint(FILE * out, const wc_certificate_t C,
                           const wc_problem_t P, int json);
 
-/* classify and stability (stabprint.c).  JSON as SPEC 4.1, with extra
+/* classify and stability (stabprint.c).  JSON as wrenchcone(1), JSON, with extra
    keys: classify adds "static_c" or "separator", and "paper_witness";
    stability adds "paper_in_weak", "semantics_differ" and
    "difference_witness".  A set is {"empty", "interior", "pieces"}.  */

@@ -1,4 +1,4 @@
-/* stabprint.c -- text and JSON for classify and stability (SPEC 4.1).
+/* stabprint.c -- text and JSON for classify and stability (wrenchcone(1), JSON).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
