@@ -525,6 +525,90 @@ reader(void)
     wc_foreign_clear(F);
 }
 
+/* Every sequence of 1 to 4 cdd blocks, each with no representation
+   keyword (cdd's default, H), 'H-representation' or 'V-representation':
+   read as one representation per block when no kind repeats, else an
+   error at the first block of a kind already seen (at its keyword, or at
+   its 'begin' when it has none).  Worked out block by block here.  */
+static void
+reader_blocks(void)
+{
+    static const char * kw[3] = { "", "H-representation\n",
+                                  "V-representation\n" };
+    wc_foreign_t F;
+    wc_error_t err;
+    char text[512], want[200];
+    slong k, code, j, ncodes;
+
+    wc_foreign_init(F);
+    wc_error_init(err);
+    for (k = 1, ncodes = 3; k <= 4; k++, ncodes *= 3)
+        for (code = 0; code < ncodes; code++)
+        {
+            int c[4], status;
+            long line = 1, first[2] = { 0, 0 }, bad_line = 0;
+            slong x = code, nreps = 0;
+            size_t n = 0;
+
+            want[0] = '\0';
+            for (j = 0; j < k; j++, x /= 3)
+            {
+                int kind;
+                long at;
+
+                c[j] = (int) (x % 3);
+                kind = c[j] == 2 ? WC_REP_GENERATORS : WC_REP_INEQUALITIES;
+                at = line;
+                n += (size_t) sprintf(text + n, "%s", kw[c[j]]);
+                line += c[j] != 0;
+                n += (size_t) sprintf(text + n, "begin\n 1 4 rational\n"
+                                      " 0 1 0 0\nend\n");
+                if (c[j] == 0)
+                    at = line;
+                line += 4;
+                if (bad_line != 0)
+                    continue;
+                if (first[kind] != 0)
+                {
+                    bad_line = at;
+                    if (c[j] == 0)
+                        sprintf(want, "a second H-representation (a block "
+                                "with no representation keyword is an "
+                                "H-representation, as in cdd; the first "
+                                "is line %ld)", first[kind]);
+                    else
+                        sprintf(want, "a second %s-representation",
+                                c[j] == 1 ? "H" : "V");
+                }
+                else
+                {
+                    first[kind] = at;
+                    nreps++;
+                }
+            }
+            status = wc_foreign_parse(F, text, n, "b.ine", err);
+            if (bad_line != 0
+                ? status != WC_EINPUT || err->line != bad_line
+                  || err->col != 1 || strcmp(err->message, want) != 0
+                  || F->nreps != 0
+                : status != WC_OK || F->nreps != nreps)
+                wctest_fail("blocks %ld/%ld: status %d at %ld:%ld '%s' "
+                            "(%ld reps); want %s at %ld:1 '%s'", (long) k,
+                            (long) code, status, err->line, err->col,
+                            status == WC_OK ? "" : err->message,
+                            (long) F->nreps, bad_line ? "an error" : "OK",
+                            bad_line, want);
+            for (j = 0; bad_line == 0 && j < nreps; j++)
+                if (F->reps[j].kind != (c[j] == 2 ? WC_REP_GENERATORS
+                                        : WC_REP_INEQUALITIES)
+                    || fmpq_mat_nrows(F->reps[j].rows) != 1)
+                    wctest_fail("blocks %ld/%ld: representation %ld wrong",
+                                (long) k, (long) code, (long) j);
+        }
+    wc_error_clear(err);
+    wc_foreign_clear(F);
+}
+
 int
 main(void)
 {
@@ -532,6 +616,7 @@ main(void)
     hand_angles();
     hand_distances();
     reader();
+    reader_blocks();
     random_distances();
     flint_cleanup_master();
     return 0;
