@@ -609,6 +609,88 @@ reader_blocks(void)
     wc_foreign_clear(F);
 }
 
+/* A JSON cone's "dim", "lineality_dim" and "faces" need not agree with
+   its data (that is computed), but must be well formed.  */
+static void
+reader_json_keys(void)
+{
+    static const struct
+    {
+        const char * text;
+        long line, col;
+        const char * message;   /* NULL: read without error */
+    }
+    cases[] = {
+        { "{\"empty\": false, \"dim\": 2, \"lineality_dim\": 0, \"rays\": "
+          "[[1, 0, 0], [0, 1, 0]], \"faces\": [{\"dim\": 0, \"rays\": [], "
+          "\"included\": true}, {\"dim\": 2, \"rays\": [0, 1], "
+          "\"included\": false}]}", 0, 0, NULL },
+        { "{\"empty\": true, \"faces\": []}", 0, 0, NULL },
+        { "{\"empty\": false, \"dim\": 3.5, \"rays\": [[1, 0, 0]]}", 1, 25,
+          "'dim' must be an integer from 0 to 3, not 3.5" },
+        { "{\"empty\": false, \"dim\": -1, \"rays\": [[1, 0, 0]]}", 1, 25,
+          "'dim' must be an integer from 0 to 3, not -1" },
+        { "{\"empty\": true,\n \"dim\": -1}", 2, 9,
+          "'dim' must be an integer from 0 to 3, not -1" },
+        { "{\"empty\": false, \"dim\": \"3\", \"rays\": [[1, 0, 0]]}", 1, 25,
+          "'dim' must be an integer from 0 to 3, found a string" },
+        { "{\"empty\": false, \"lineality_dim\": 4, \"rays\": [[1, 0, 0]]}",
+          1, 35, "'lineality_dim' must be an integer from 0 to 3, not 4" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0], [0, 1, 0]],\n"
+          " \"faces\": [{\"dim\": 1, \"rays\": [1]}, {\"dim\": 1, "
+          "\"rays\": [2]}]}", 2, 57,
+          "face ray index 2 is out of range: 'rays' has 2 rows (0 to 1)" },
+        { "{\"empty\": false, \"inequalities\": [[1, 0, 0]],\n"
+          " \"faces\": [{\"dim\": 1, \"rays\": [0]}]}", 2, 32,
+          "face ray index 0 is out of range: the cone has no 'rays'" },
+        { "{\"empty\": true, \"faces\": [{\"rays\": [0]}]}", 1, 37,
+          "face ray index 0 is out of range: the cone is empty" },
+        { "{\"empty\": false, \"rays\": [], \"lines\": [[1, 0, 0]], "
+          "\"faces\": [{\"rays\": [0]}]}", 1, 72,
+          "face ray index 0 is out of range: 'rays' is empty" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"rays\": "
+          "[-1]}]}", 1, 59,
+          "face ray index -1 is out of range: 'rays' has 1 row (0 to 0)" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"rays\": "
+          "[0.5]}]}", 1, 59,
+          "a face ray index must be an integer, not 0.5" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"rays\": "
+          "[0]}, [0]]}", 1, 64, "each entry of 'faces' must be an object" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": {}}", 1, 48,
+          "'faces' must be an array" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"rays\": "
+          "0}]}", 1, 58, "a face's 'rays' must be an array" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"dim\": "
+          "7, \"rays\": [0]}]}", 1, 57,
+          "'dim' must be an integer from 0 to 3, not 7" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"rays\": "
+          "[0], \"included\": 1}]}", 1, 75,
+          "'included' must be true or false" },
+    };
+    wc_foreign_t F;
+    wc_error_t err;
+    size_t i;
+
+    wc_foreign_init(F);
+    wc_error_init(err);
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
+    {
+        int status = wc_foreign_parse(F, cases[i].text, strlen(cases[i].text),
+                                      "c.json", err);
+
+        if (cases[i].message == NULL ? status != WC_OK
+            : status != WC_EINPUT || err->line != cases[i].line
+              || err->col != cases[i].col
+              || strcmp(err->message, cases[i].message) != 0
+              || F->nreps != 0)
+            wctest_fail("json keys %ld: status %d at %ld:%ld '%s'", (long) i,
+                        status, err->line, err->col,
+                        status == WC_OK ? "" : err->message);
+    }
+    wc_error_clear(err);
+    wc_foreign_clear(F);
+}
+
 int
 main(void)
 {
@@ -617,6 +699,7 @@ main(void)
     hand_distances();
     reader();
     reader_blocks();
+    reader_json_keys();
     random_distances();
     flint_cleanup_master();
     return 0;
