@@ -284,11 +284,26 @@ bad exponent "4:4: exponent out of range in '1e2000' (at most 1000 here)" \
     'V-representation\nbegin\n 1 4 real\n 0 1e2000 0 0\nend\n'
 bad second "6:1: a second V-representation" \
     'V-representation\nbegin\n 1 4 real\n 0 1 0 0\nend\nV-representation\n'
+# At most one H- and one V-representation: a block with no keyword is H
+# (cdd's default), so a third block always repeats a kind.
+bad blocks-default "10:1: a second H-representation (a block with no representation keyword is an H-representation, as in cdd; the first is line 1)" \
+    'begin\n 1 4 real\n 0 1 0 0\nend\nV-representation\nbegin\n 1 4 real\n 0 1 0 0\nend\nbegin\n 1 4 real\n 0 1 0 0\nend\n'
+bad blocks-three "11:1: a second H-representation (a block with no representation keyword is an H-representation, as in cdd; the first is line 6)" \
+    'V-representation\nbegin\n 1 4 real\n 0 1 0 0\nend\nH-representation\nbegin\n 1 4 real\n 0 1 0 0\nend\nbegin\n 1 4 real\n 0 1 0 0\nend\nbegin\n 1 4 real\n 0 1 0 0\nend\n'
+bad blocks-v "10:1: a second V-representation" \
+    'begin\n 1 4 real\n 0 1 0 0\nend\nV-representation\nbegin\n 1 4 real\n 0 1 0 0\nend\nV-representation\nbegin\n 1 4 real\n 0 1 0 0\nend\n'
 bad json-short "1:50: each entry of 'rays' must be an array of 3 numbers" \
     '{"mode": "na", "cone": {"empty": false, "rays": [[1, 2]]}}\n'
 bad json-empty "1:11: 'empty' must be true or false" '{"empty": "no"}\n'
 bad json-syntax "2:1: unexpected end of input" \
     '{"empty": false, "rays": [[1, 2, 3]]\n'
+# "dim", "lineality_dim" and "faces" are not read, but must be well formed.
+bad json-dim-fraction "1:25: 'dim' must be an integer from 0 to 3, not 3.5" \
+    '{"empty": false, "dim": 3.5, "rays": [[1, 0, 0]]}\n'
+bad json-dim-negative "2:9: 'dim' must be an integer from 0 to 3, not -1" \
+    '{"empty": false,\n "dim": -1, "rays": [[1, 0, 0]]}\n'
+bad json-face-ray "2:35: face ray index 3 is out of range: 'rays' has 3 rows (0 to 2)" \
+    '{"empty": false, "rays": [[1, 0, 0], [0, 1, 0], [0, 0, 1]],\n "faces": [{"dim": 2, "rays": [0, 3], "included": true}]}\n'
 
 # --- Bad usage: exit 2, nothing on stdout.
 usage() {

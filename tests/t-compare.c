@@ -525,6 +525,172 @@ reader(void)
     wc_foreign_clear(F);
 }
 
+/* Every sequence of 1 to 4 cdd blocks, each with no representation
+   keyword (cdd's default, H), 'H-representation' or 'V-representation':
+   read as one representation per block when no kind repeats, else an
+   error at the first block of a kind already seen (at its keyword, or at
+   its 'begin' when it has none).  Worked out block by block here.  */
+static void
+reader_blocks(void)
+{
+    static const char * kw[3] = { "", "H-representation\n",
+                                  "V-representation\n" };
+    wc_foreign_t F;
+    wc_error_t err;
+    char text[512], want[200];
+    slong k, code, j, ncodes;
+
+    wc_foreign_init(F);
+    wc_error_init(err);
+    for (k = 1, ncodes = 3; k <= 4; k++, ncodes *= 3)
+        for (code = 0; code < ncodes; code++)
+        {
+            int c[4], status;
+            long line = 1, first[2] = { 0, 0 }, bad_line = 0;
+            slong x = code, nreps = 0;
+            size_t n = 0;
+
+            want[0] = '\0';
+            for (j = 0; j < k; j++, x /= 3)
+            {
+                int kind;
+                long at;
+
+                c[j] = (int) (x % 3);
+                kind = c[j] == 2 ? WC_REP_GENERATORS : WC_REP_INEQUALITIES;
+                at = line;
+                n += (size_t) sprintf(text + n, "%s", kw[c[j]]);
+                line += c[j] != 0;
+                n += (size_t) sprintf(text + n, "begin\n 1 4 rational\n"
+                                      " 0 1 0 0\nend\n");
+                if (c[j] == 0)
+                    at = line;
+                line += 4;
+                if (bad_line != 0)
+                    continue;
+                if (first[kind] != 0)
+                {
+                    bad_line = at;
+                    if (c[j] == 0)
+                        sprintf(want, "a second H-representation (a block "
+                                "with no representation keyword is an "
+                                "H-representation, as in cdd; the first "
+                                "is line %ld)", first[kind]);
+                    else
+                        sprintf(want, "a second %s-representation",
+                                c[j] == 1 ? "H" : "V");
+                }
+                else
+                {
+                    first[kind] = at;
+                    nreps++;
+                }
+            }
+            status = wc_foreign_parse(F, text, n, "b.ine", err);
+            if (bad_line != 0
+                ? status != WC_EINPUT || err->line != bad_line
+                  || err->col != 1 || strcmp(err->message, want) != 0
+                  || F->nreps != 0
+                : status != WC_OK || F->nreps != nreps)
+                wctest_fail("blocks %ld/%ld: status %d at %ld:%ld '%s' "
+                            "(%ld reps); want %s at %ld:1 '%s'", (long) k,
+                            (long) code, status, err->line, err->col,
+                            status == WC_OK ? "" : err->message,
+                            (long) F->nreps, bad_line ? "an error" : "OK",
+                            bad_line, want);
+            for (j = 0; bad_line == 0 && j < nreps; j++)
+                if (F->reps[j].kind != (c[j] == 2 ? WC_REP_GENERATORS
+                                        : WC_REP_INEQUALITIES)
+                    || fmpq_mat_nrows(F->reps[j].rows) != 1)
+                    wctest_fail("blocks %ld/%ld: representation %ld wrong",
+                                (long) k, (long) code, (long) j);
+        }
+    wc_error_clear(err);
+    wc_foreign_clear(F);
+}
+
+/* A JSON cone's "dim", "lineality_dim" and "faces" need not agree with
+   its data (that is computed), but must be well formed.  */
+static void
+reader_json_keys(void)
+{
+    static const struct
+    {
+        const char * text;
+        long line, col;
+        const char * message;   /* NULL: read without error */
+    }
+    cases[] = {
+        { "{\"empty\": false, \"dim\": 2, \"lineality_dim\": 0, \"rays\": "
+          "[[1, 0, 0], [0, 1, 0]], \"faces\": [{\"dim\": 0, \"rays\": [], "
+          "\"included\": true}, {\"dim\": 2, \"rays\": [0, 1], "
+          "\"included\": false}]}", 0, 0, NULL },
+        { "{\"empty\": true, \"faces\": []}", 0, 0, NULL },
+        { "{\"empty\": false, \"dim\": 3.5, \"rays\": [[1, 0, 0]]}", 1, 25,
+          "'dim' must be an integer from 0 to 3, not 3.5" },
+        { "{\"empty\": false, \"dim\": -1, \"rays\": [[1, 0, 0]]}", 1, 25,
+          "'dim' must be an integer from 0 to 3, not -1" },
+        { "{\"empty\": true,\n \"dim\": -1}", 2, 9,
+          "'dim' must be an integer from 0 to 3, not -1" },
+        { "{\"empty\": false, \"dim\": \"3\", \"rays\": [[1, 0, 0]]}", 1, 25,
+          "'dim' must be an integer from 0 to 3, found a string" },
+        { "{\"empty\": false, \"lineality_dim\": 4, \"rays\": [[1, 0, 0]]}",
+          1, 35, "'lineality_dim' must be an integer from 0 to 3, not 4" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0], [0, 1, 0]],\n"
+          " \"faces\": [{\"dim\": 1, \"rays\": [1]}, {\"dim\": 1, "
+          "\"rays\": [2]}]}", 2, 57,
+          "face ray index 2 is out of range: 'rays' has 2 rows (0 to 1)" },
+        { "{\"empty\": false, \"inequalities\": [[1, 0, 0]],\n"
+          " \"faces\": [{\"dim\": 1, \"rays\": [0]}]}", 2, 32,
+          "face ray index 0 is out of range: the cone has no 'rays'" },
+        { "{\"empty\": true, \"faces\": [{\"rays\": [0]}]}", 1, 37,
+          "face ray index 0 is out of range: the cone is empty" },
+        { "{\"empty\": false, \"rays\": [], \"lines\": [[1, 0, 0]], "
+          "\"faces\": [{\"rays\": [0]}]}", 1, 72,
+          "face ray index 0 is out of range: 'rays' is empty" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"rays\": "
+          "[-1]}]}", 1, 59,
+          "face ray index -1 is out of range: 'rays' has 1 row (0 to 0)" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"rays\": "
+          "[0.5]}]}", 1, 59,
+          "a face ray index must be an integer, not 0.5" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"rays\": "
+          "[0]}, [0]]}", 1, 64, "each entry of 'faces' must be an object" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": {}}", 1, 48,
+          "'faces' must be an array" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"rays\": "
+          "0}]}", 1, 58, "a face's 'rays' must be an array" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"dim\": "
+          "7, \"rays\": [0]}]}", 1, 57,
+          "'dim' must be an integer from 0 to 3, not 7" },
+        { "{\"empty\": false, \"rays\": [[1, 0, 0]], \"faces\": [{\"rays\": "
+          "[0], \"included\": 1}]}", 1, 75,
+          "'included' must be true or false" },
+    };
+    wc_foreign_t F;
+    wc_error_t err;
+    size_t i;
+
+    wc_foreign_init(F);
+    wc_error_init(err);
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
+    {
+        int status = wc_foreign_parse(F, cases[i].text, strlen(cases[i].text),
+                                      "c.json", err);
+
+        if (cases[i].message == NULL ? status != WC_OK
+            : status != WC_EINPUT || err->line != cases[i].line
+              || err->col != cases[i].col
+              || strcmp(err->message, cases[i].message) != 0
+              || F->nreps != 0)
+            wctest_fail("json keys %ld: status %d at %ld:%ld '%s'", (long) i,
+                        status, err->line, err->col,
+                        status == WC_OK ? "" : err->message);
+    }
+    wc_error_clear(err);
+    wc_foreign_clear(F);
+}
+
 int
 main(void)
 {
@@ -532,6 +698,8 @@ main(void)
     hand_angles();
     hand_distances();
     reader();
+    reader_blocks();
+    reader_json_keys();
     random_distances();
     flint_cleanup_master();
     return 0;

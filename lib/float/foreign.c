@@ -259,6 +259,123 @@ json_vectors(_wc_rowbuf * out, const wc_json_node ** present,
     return status;
 }
 
+/* "dim", "lineality_dim" and "faces" (as `wrenchcone cone --format=json`
+   writes them) are not read: the dimensions and faces are computed from
+   the data, and which faces a float cone includes cannot be trusted.  But
+   when present they must be well formed, so that a file that states a
+   nonsense is not taken silently: a dimension is a JSON number spelling
+   an integer from 0 to 3 (a nonempty cone in R^3; an empty one is
+   {"empty": true}), "faces" an array of objects whose "dim" is such a
+   dimension, whose "included" is true or false, and whose "rays" are
+   indices into the cone's "rays" (from 0).  */
+
+/* x := the JSON number v (exactly), or a located error.  */
+static int
+json_exact(fmpq_t x, const _wc_source * s, const wc_json_node * v)
+{
+    return _wc_foreign_number(x, s, v->text, v->len, v->line, v->col);
+}
+
+/* v, the value of key, is a dimension (NULL: absent).  */
+static int
+json_dim(const _wc_source * s, const wc_json_node * v, const char * key)
+{
+    fmpq_t x;
+    int status, ok;
+
+    if (v == NULL)
+        return WC_OK;
+    if (v->type != WC_JSON_NUMBER)
+        return at_node(s, v, "'%s' must be an integer from 0 to 3, found %s",
+                       key, _wc_json_type_name(v->type));
+    fmpq_init(x);
+    status = json_exact(x, s, v);
+    ok = fmpz_is_one(fmpq_denref(x)) && fmpq_sgn(x) >= 0
+        && fmpz_cmp_si(fmpq_numref(x), 3) <= 0;
+    fmpq_clear(x);
+    if (status == WC_OK && !ok)
+        status = at_node(s, v, "'%s' must be an integer from 0 to 3, not %s",
+                         key, v->text);
+    return status;
+}
+
+/* The ray indices r of a face; the cone has nrays rays (rays: its "rays",
+   NULL when absent; empty: it is {"empty": true}).  */
+static int
+json_face_rays(const _wc_source * s, const wc_json_node * r, size_t nrays,
+               const wc_json_node * rays, int empty)
+{
+    fmpq_t x;
+    size_t i;
+    int status = WC_OK;
+
+    if (r->type != WC_JSON_ARRAY)
+        return at_node(s, r, "a face's 'rays' must be an array");
+    fmpq_init(x);
+    for (i = 0; i < r->len && status == WC_OK; i++)
+    {
+        const wc_json_node * v = r->items + i;
+
+        if (v->type != WC_JSON_NUMBER)
+            status = at_node(s, v, "a face ray index must be an integer, "
+                             "found %s", _wc_json_type_name(v->type));
+        else if ((status = json_exact(x, s, v)) != WC_OK)
+            break;
+        else if (!fmpz_is_one(fmpq_denref(x)))
+            status = at_node(s, v, "a face ray index must be an integer, "
+                             "not %s", v->text);
+        else if (fmpq_sgn(x) < 0 || fmpz_cmp_ui(fmpq_numref(x), (ulong) nrays) >= 0)
+        {
+            if (nrays == 0)
+                status = at_node(s, v, "face ray index %s is out of range: "
+                                 "%s", v->text, empty ? "the cone is empty"
+                                 : rays == NULL ? "the cone has no 'rays'"
+                                 : "'rays' is empty");
+            else
+                status = at_node(s, v, "face ray index %s is out of range: "
+                                 "'rays' has %lu row%s (0 to %lu)", v->text,
+                                 (unsigned long) nrays, nrays == 1 ? "" : "s",
+                                 (unsigned long) nrays - 1);
+        }
+    }
+    fmpq_clear(x);
+    return status;
+}
+
+/* The keys of cone object c that are checked but not read (above).  */
+static int
+json_unread(const _wc_source * s, const wc_json_node * c,
+            const wc_json_node * rays, int empty)
+{
+    const wc_json_node * faces = _wc_json_object_get(c, "faces");
+    size_t nrays = empty || rays == NULL ? 0 : rays->len, f;
+    int status;
+
+    if ((status = json_dim(s, _wc_json_object_get(c, "dim"), "dim")) != WC_OK
+        || (status = json_dim(s, _wc_json_object_get(c, "lineality_dim"),
+                              "lineality_dim")) != WC_OK
+        || faces == NULL)
+        return status;
+    if (faces->type != WC_JSON_ARRAY)
+        return at_node(s, faces, "'faces' must be an array");
+    for (f = 0; f < faces->len && status == WC_OK; f++)
+    {
+        const wc_json_node * o = faces->items + f, * v;
+
+        if (o->type != WC_JSON_OBJECT)
+            return at_node(s, o, "each entry of 'faces' must be an object");
+        status = json_dim(s, _wc_json_object_get(o, "dim"), "dim");
+        v = _wc_json_object_get(o, "included");
+        if (status == WC_OK && v != NULL && v->type != WC_JSON_TRUE
+            && v->type != WC_JSON_FALSE)
+            status = at_node(s, v, "'included' must be true or false");
+        v = _wc_json_object_get(o, "rays");
+        if (status == WC_OK && v != NULL)
+            status = json_face_rays(s, v, nrays, rays, empty);
+    }
+    return status;
+}
+
 static int
 parse_json(wc_foreign_t F, const _wc_source * s)
 {
@@ -330,13 +447,16 @@ parse_json(wc_foreign_t F, const _wc_source * s)
     }
     if (e->type == WC_JSON_TRUE)
     {
-        _wc_foreign_add_rep(F, WC_REP_STATED, c->line, 1, NULL, NULL);
+        status = json_unread(s, c, NULL, 1);
+        if (status == WC_OK)
+            _wc_foreign_add_rep(F, WC_REP_STATED, c->line, 1, NULL, NULL);
         goto cleanup;
     }
     if ((status = json_vectors(&R, &rays, s, c, "rays")) != WC_OK
         || (status = json_vectors(&L, &lines, s, c, "lines")) != WC_OK
         || (status = json_vectors(&H, &ineqs, s, c, "inequalities")) != WC_OK
-        || (status = json_vectors(&E, &eqs, s, c, "equalities")) != WC_OK)
+        || (status = json_vectors(&E, &eqs, s, c, "equalities")) != WC_OK
+        || (status = json_unread(s, c, rays, 0)) != WC_OK)
         goto cleanup;
     if (rays == NULL && lines == NULL && ineqs == NULL && eqs == NULL)
     {

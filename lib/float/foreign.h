@@ -39,7 +39,7 @@ void _wc_rowbuf_clear(_wc_rowbuf * b);
 void _wc_rowbuf_push(_wc_rowbuf * b, const fmpq * x, long line);
 
 /* Append to F a representation built from the buffers (either may be
-   NULL: no rows).  */
+   NULL: no rows).  F must hold fewer than 2: the readers check it.  */
 void _wc_foreign_add_rep(wc_foreign_t F, wc_rep_kind kind, long line,
                          int empty, const _wc_rowbuf * rows,
                          const _wc_rowbuf * lin);

@@ -367,6 +367,9 @@ cdd_finish(wc_foreign_t F, cdd_block * B, const _wc_source * s, long no,
                            B->nread == 1 ? "" : "s", B->header_line, B->m);
     if (B->kind == WC_REP_GENERATORS && B->m == 0)
         B->empty = 1;
+    if (F->nreps == 2)      /* cdd_kind and cdd_begin see to it */
+        return wc_error_set(s->err, WC_EINTERNAL, s->file, no, col,
+                            "a third representation");
     _wc_foreign_add_rep(F, (wc_rep_kind) B->kind, B->kind_line, B->empty,
                         &B->rows, &B->lin_rows);
     block_clear(B);
@@ -389,6 +392,25 @@ cdd_nul(const _wc_source * s, const char * nul)
     return _wc_located(s, l, (long) (at - ls) + 1, "NUL byte in the file");
 }
 
+/* Repeated blocks: a file holds at most one representation of each
+   kind, an H-representation and a V-representation, in either order (as
+   `wrenchcone cone --format=cdd` writes them, H then V), so at most two
+   blocks; a block with no representation keyword is an H-representation,
+   as in cdd.  A block of a kind already read is an error, located at its
+   keyword, or at its 'begin' when it has none; so F->reps never holds
+   more than its two.  The line where the earlier block of kind k starts,
+   0 when there is none.  */
+static long
+cdd_seen(const wc_foreign_t F, int k)
+{
+    slong i;
+
+    for (i = 0; i < F->nreps; i++)
+        if ((int) F->reps[i].kind == k)
+            return F->reps[i].line;
+    return 0;
+}
+
 /* 'H-representation' or 'V-representation' (tokens t[0..n)).  */
 static int
 cdd_kind(cdd_block * B, const wc_foreign_t F, const _wc_source * s,
@@ -404,7 +426,7 @@ cdd_kind(cdd_block * B, const wc_foreign_t F, const _wc_source * s,
     if (B->kind >= 0)
         return _wc_located(s, no, t[0].col, "a second representation "
                            "keyword (the first is line %ld)", B->kind_line);
-    if (F->nreps == 2 || (F->nreps == 1 && (int) F->reps[0].kind == k))
+    if (cdd_seen(F, k) != 0)
         return _wc_located(s, no, t[0].col, "a second %s",
                            k == WC_REP_INEQUALITIES ? "H-representation"
                            : "V-representation");
@@ -427,10 +449,13 @@ cdd_begin(cdd_block * B, cdd_state * st, const wc_foreign_t F,
     if (B->kind >= 0)
         return WC_OK;
     /* cdd's default */
+    if (cdd_seen(F, WC_REP_INEQUALITIES) != 0)
+        return _wc_located(s, no, t[0].col, "a second H-representation (a "
+                           "block with no representation keyword is an "
+                           "H-representation, as in cdd; the first is line "
+                           "%ld)", cdd_seen(F, WC_REP_INEQUALITIES));
     B->kind = WC_REP_INEQUALITIES;
     B->kind_line = no;
-    if (F->nreps == 1 && F->reps[0].kind == WC_REP_INEQUALITIES)
-        return _wc_located(s, no, t[0].col, "a second H-representation");
     return WC_OK;
 }
 
