@@ -133,7 +133,8 @@ void wc_foreign_clear(wc_foreign_t F);
    also be a name (as lrs writes); then 'begin', 'm 4 numbertype'
    (rational, real or integer; 4 columns: cones live in R^3), m rows of 4
    numbers, one row per line, and 'end'.  A second block (H then V, as
-   `wrenchcone cone --format=cdd` writes) may follow.  Rows:
+   `wrenchcone cone --format=cdd` writes) may follow: at most one block of
+   each kind, a block with no keyword being H.  Rows:
    - H: 'b a1 a2 a3' is b + a.g >= 0 (cdd writes b - A x >= 0 as the row
      b -A).  b must be 0 (a cone), except in a row with a = 0: 'b 0 0 0'
      holds for b >= 0 and is dropped, and with b < 0 (or b != 0 in a
@@ -150,7 +151,9 @@ void wc_foreign_clear(wc_foreign_t F);
    optional "lines") or "inequalities" (with optional "equalities"), and
    each given set is one representation.  Other keys ("dim", "faces",
    "strict", ...) are not read: the dimension is computed from the data,
-   and strictness cannot be trusted from a float cone.
+   and strictness cannot be trusted from a float cone; but "dim",
+   "lineality_dim" and "faces", when present, must be well formed
+   (dimensions 0 to 3, face ray indices into "rays").
 
    Limits (hostile files must not take forever): at most 1000 rows in a
    representation, numbers of at most 1000 characters with exponents of
