@@ -84,6 +84,11 @@ for k in ("strong", "strong_paper"):
     s = d[k]
     assert s["empty"] is False and s["interior"] is True, s
 assert d["semantics_differ"] is True
+# The witness is a nonzero wrench: the origin is in every set of the
+# definition and in every W(x), so it would show nothing.
+assert d["differ_only_at_origin"] is False and d["paper_vacuous"] is False, d
+assert d["difference_witness"] == {"wrench": ["-1", "-1", "-1"],
+                                   "strong": True, "strong_paper": False}, d
 assert d["push"]["strong"] == [{"from": ["0", "1"], "to": ["-1", "0"],
                                 "from_closed": True, "to_closed": True}], d["push"]
 assert d["push"]["strong_paper"] == [{"from": ["0", "1"], "to": ["-1", "0"],
@@ -106,6 +111,25 @@ PY
 # The text output says how the semantics differ.
 "$W" stability "$D/disk-two-fixels.wc" > "$tmp/t" 2> /dev/null || fail "stability text"
 grep -q '^the semantics differ' "$tmp/t" || fail "text lacks the semantics line"
+grep -q '^the semantics differ: e.g. g = (-1, -1, -1) is strongly stable under the definition (exact) only' "$tmp/t" \
+    || fail "the text witness is not the nonzero (-1, -1, -1)"
+# A second route: classify decides that witness by LPs alone.
+"$W" classify "$D/disk-two-fixels.wc" -1 -1 -1 > "$tmp/t" 2> /dev/null || fail "classify witness"
+grep -q '^strongly stable (exact semantics, Pang and Trinkle): yes$' "$tmp/t" \
+    && grep -q '^strongly stable (paper semantics, eq. 19): no$' "$tmp/t" \
+    || fail "classify disagrees with the stability witness"
+
+# No touching fixel: eq. 19 holds vacuously, and both outputs say so.
+"$W" stability "$D/three-fixels.wc" > "$tmp/t" 2> /dev/null || fail "stability three-fixels"
+grep -q '^note: no fixel touches, so eq. 19 is vacuous' "$tmp/t" || fail "no vacuity note (stability)"
+"$W" stability --format=json "$D/three-fixels.wc" | grep -q '"paper_vacuous": true' \
+    || fail "no vacuity flag (stability JSON)"
+"$W" classify "$D/three-fixels.wc" 0 -1 0 > "$tmp/t" 2> /dev/null || fail "classify three-fixels"
+grep -q '^  vacuously: no fixel touches' "$tmp/t" || fail "no vacuity note (classify)"
+"$W" classify --format=json "$D/three-fixels.wc" 0 -1 0 | grep -q '"paper_vacuous": true' \
+    || fail "no vacuity flag (classify JSON)"
+"$W" classify --format=json "$D/disk-two-fixels.wc" 0 -1 0 | grep -q '"paper_vacuous": false' \
+    || fail "vacuity flag set with touching fixels (classify JSON)"
 
 # Certificates: written, and checked by verify with GMP alone.
 if "$W" verify --help 2>/dev/null | grep -q strong-stability; then

@@ -641,6 +641,7 @@ wc_classify(wc_classify_t R, const wc_problem_t P, const fmpq * g,
     if (status == WC_OK)
     {
         R->strong_paper = !paper_found;
+        R->paper_vacuous = (m.t == 0);
         status = classify_modes(R, &m, max_modes, err);
     }
     _wc_stab_model_clear(&m);

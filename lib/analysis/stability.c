@@ -353,7 +353,7 @@ stability_sets(wc_stability_t S, wc_error_t err)
 {
     fmpz_mat_t planes;
     slong i, k, np = 0;
-    int status, * in_exact, * in_paper;
+    int status, nonzero, * in_exact, * in_paper;
     fmpq g[3];
 
     fmpz_mat_init(planes, 0, 3);
@@ -372,9 +372,10 @@ stability_sets(wc_stability_t S, wc_error_t err)
         fmpq_init(g + k);
     S->paper_in_weak = 1;
     S->differ = 0;
+    nonzero = 0;
     for (i = 0; i < S->cells->count; i++)
     {
-        int w;
+        int w, z;
 
         _fmpq_vec_set_fmpz_vec(g, WC_ROW(S->cells->point, i), 3);
         w = wc_cone_contains(S->weak, g);
@@ -382,13 +383,19 @@ stability_sets(wc_stability_t S, wc_error_t err)
         in_paper[i] = !in_paper_union(S, g);
         if (in_paper[i] && !w)
             S->paper_in_weak = 0;
-        if (!S->differ && in_exact[i] != in_paper[i])
+        /* The origin is strongly stable by definition and lies in every
+           W(x): it differs whenever a fixel touches, which says nothing,
+           so a nonzero witness is preferred.  */
+        z = fmpq_is_zero(g) && fmpq_is_zero(g + 1) && fmpq_is_zero(g + 2);
+        if (in_exact[i] != in_paper[i] && (!S->differ || (!nonzero && !z)))
         {
             S->differ = 1;
+            nonzero = !z;
             _wc_qvec_set(S->diff_g, g, 3);
             S->diff_in_exact = in_exact[i];
         }
     }
+    S->diff_origin_only = S->differ && !nonzero;
     if ((status = wc_set_from_cells(S->strong, S->cells, in_exact, err))
         == WC_OK
         && (status = wc_set_from_cells(S->strong_paper, S->cells, in_paper,
@@ -436,6 +443,7 @@ wc_stability(wc_stability_t S, const wc_problem_t P, wc_error_t err)
     if ((status = wc_problem_check(P, err)) != WC_OK)
         return status;
     _wc_stab_model_init(&m, P);
+    S->paper_vacuous = (m.t == 0);
     status = stability_cones(S, &m, err);
     if (status == WC_OK)
         status = stability_sets(S, err);

@@ -80,6 +80,7 @@ typedef struct
                                >= 0 for every touching fixel (not weak) */
     int strong;             /* exact semantics */
     int strong_paper;       /* eq. 19 */
+    int paper_vacuous;      /* no fixel touches: eq. 19 excludes nothing */
     /* Every moving face with a solution, by sign string (rotation faces
        as two entries "n..n"), with a witness.  */
     slong nmotions;
@@ -124,9 +125,14 @@ typedef struct
     wc_set_t strong;        /* exact semantics */
     wc_set_t strong_paper;  /* eq. 19 */
     int paper_in_weak;      /* strong_paper is a subset of weak */
+    int paper_vacuous;      /* no fixel touches: eq. 19's union is empty,
+                               so strong_paper is R^3 and says nothing */
     /* A wrench in one set and not the other (in the symmetric
-       difference), when they differ, with which set holds it.  */
+       difference), when they differ, with which set holds it: a nonzero
+       one whenever there is one; diff_origin_only when the origin is the
+       only wrench in the difference.  */
     int differ;
+    int diff_origin_only;
     fmpq diff_g[3];
     int diff_in_exact;
     /* The cones the sets are built from, and the planes of their

@@ -49,9 +49,10 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
             wc_fprint_json_string(out, R->modes[i]);
         }
         fprintf(out, "], \"modes_complete\": %s, \"weakly_stable\": %s, \"strongly_stable\": %s, "
-                "\"strongly_stable_paper\": %s, \"motions\": [",
+                "\"strongly_stable_paper\": %s, \"paper_vacuous\": %s, "
+                "\"motions\": [",
                 _wc_tf(R->modes_complete), _wc_tf(R->weak), _wc_tf(R->strong),
-                _wc_tf(R->strong_paper));
+                _wc_tf(R->strong_paper), _wc_tf(R->paper_vacuous));
         for (i = 0; i < R->nmotions; i++)
         {
             fputs(i ? ", {\"sign\": " : "{\"sign\": ", out);
@@ -114,6 +115,9 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
         fputs("  not weakly stable\n", out);
     fprintf(out, "strongly stable (paper semantics, eq. 19): %s\n",
             _wc_yes(R->strong_paper));
+    if (R->paper_vacuous)
+        fputs("  vacuously: no fixel touches, so eq. 19 excludes nothing"
+              " (its union of cones is empty)\n", out);
     if (!R->strong_paper)
     {
         fprintf(out, "  W(%s) holds the wrench: nudot = ", R->paper.sign);
@@ -265,8 +269,10 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
         wc_set_fprint_json(out, S->strong);
         fputs(", \"strong_paper\": ", out);
         wc_set_fprint_json(out, S->strong_paper);
-        fprintf(out, ", \"paper_in_weak\": %s, \"semantics_differ\": %s",
-                _wc_tf(S->paper_in_weak), _wc_tf(S->differ));
+        fprintf(out, ", \"paper_in_weak\": %s, \"paper_vacuous\": %s, "
+                "\"semantics_differ\": %s, \"differ_only_at_origin\": %s",
+                _wc_tf(S->paper_in_weak), _wc_tf(S->paper_vacuous),
+                _wc_tf(S->differ), _wc_tf(S->diff_origin_only));
         if (S->differ)
         {
             fputs(", \"difference_witness\": {\"wrench\": ", out);
@@ -297,7 +303,16 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
     fputs("strongly stable wrenches, paper semantics (eq. 19: in no W(x), "
           "x != n..n):\n", out);
     wc_set_fprint_text(out, S->strong_paper, "  ");
-    if (S->differ)
+    if (S->paper_vacuous)
+        fputs("note: no fixel touches, so eq. 19 is vacuous (its union of "
+              "cones is empty):\n  its set is all of R^3 and says nothing "
+              "about stability\n", out);
+    if (S->differ && S->diff_origin_only)
+        fprintf(out, "the semantics differ only at the origin g = (0, 0, 0),"
+                " strongly stable under %s only\n",
+                S->diff_in_exact ? "the definition (exact); every W(x) of "
+                "eq. 19 holds it" : "eq. 19 (paper)");
+    else if (S->differ)
     {
         fputs("the semantics differ: e.g. g = ", out);
         wc_fprint_qvec(out, S->diff_g, 3, 0);
