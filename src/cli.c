@@ -162,7 +162,8 @@ cli_parse_numbers(fmpq * v, char ** args, slong k, const char * what,
 
     for (i = 0; i < k; i++)
     {
-        if (wc_parse_number(v + i, args[i], strlen(args[i]), err) != WC_OK)
+        if (wc_parse_number_bounded(v + i, args[i], strlen(args[i]), err)
+            != WC_OK)
         {
             char * why = wc_error_format(err);
             int st = wc_error_set(err, WC_EINPUT, what, 1, col, "%s",

@@ -76,11 +76,12 @@ parse_friction(wc_random_options * ro, const char * s)
     int ok;
 
     wc_error_init(err);
-    ok = wc_parse_number(ro->mu_s, s, len, err) == WC_OK
+    ok = wc_parse_number_bounded(ro->mu_s, s, len, err) == WC_OK
         && fmpq_sgn(ro->mu_s) >= 0;
     if (ok && comma != NULL)
-        ok = wc_parse_number(ro->mu_k, comma + 1, strlen(comma + 1), err)
-            == WC_OK && fmpq_sgn(ro->mu_k) >= 0;
+        ok = wc_parse_number_bounded(ro->mu_k, comma + 1,
+                                     strlen(comma + 1), err) == WC_OK
+             && fmpq_sgn(ro->mu_k) >= 0;
     else if (ok)
         fmpq_set(ro->mu_k, ro->mu_s);
     wc_error_clear(err);

@@ -26,9 +26,10 @@ const char cmd_sweep_usage[] =
     "  --critical       an exact bracket [lo, hi] of the friction at which G_goal\n"
     "                   becomes empty: nonempty at lo (with a wrench in it),\n"
     "                   empty at hi (with the strings whose cones cover R^3)\n"
-    "  --width=W        the bracket's largest width (default 1/1000)\n"
-    "  --max-friction=M give up above M (default 1024): G_goal is then\n"
-    "                   nonempty at every mu <= M\n"
+    "  --width=W        the bracket's largest width, at least 2^-96\n"
+    "                   (default 1/1000)\n"
+    "  --max-friction=M give up above M, at most 2^32 (default 1024):\n"
+    "                   G_goal is then nonempty at every mu <= M\n"
     "  --format=FMT     text (default) or json\n"
     "  -h, --help       print this help and exit\n"
     "  -V, --version    print versions and exit\n";
@@ -131,7 +132,7 @@ parse_list(fmpq ** v, slong * count, const char * s, const char * what,
         const char * e = strchr(p, ',');
         size_t len = e != NULL ? (size_t) (e - p) : strlen(p);
 
-        if (wc_parse_number(*v + i, p, len, err) != WC_OK)
+        if (wc_parse_number_bounded(*v + i, p, len, err) != WC_OK)
         {
             char * why = wc_error_format(err);
 
@@ -244,12 +245,23 @@ compute(answer * a, const wc_problem_t P, const sweep_options * o,
     if (o->friction != NULL)
         status = parse_list(&a->mu, &a->n, o->friction, "<friction>",
                             "a friction coefficient", err);
-    if (status == WC_OK && o->width != NULL)
-        status = one_positive(a->width, o->width, "<width>", "the width",
-                              err);
-    if (status == WC_OK && o->max_friction != NULL)
-        status = one_positive(a->max, o->max_friction, "<max-friction>",
-                              "the largest friction", err);
+    if (status == WC_OK && o->width != NULL
+        && (status = one_positive(a->width, o->width, "<width>",
+                                  "the width", err)) == WC_OK
+        && !wc_critical_width_ok(a->width))
+        status = wc_error_set(err, WC_EINPUT, "<width>", 1, 1,
+                              "the width must be at least 2^-%d (about "
+                              "1.3e-29): each halving costs a plan",
+                              WC_CRITICAL_MIN_WIDTH_EXP);
+    if (status == WC_OK && o->max_friction != NULL
+        && (status = one_positive(a->max, o->max_friction,
+                                  "<max-friction>", "the largest friction",
+                                  err)) == WC_OK
+        && !wc_critical_max_ok(a->max))
+        status = wc_error_set(err, WC_EINPUT, "<max-friction>", 1, 1,
+                              "the largest friction must be at most 2^%d "
+                              "(4294967296): each doubling costs a plan",
+                              WC_CRITICAL_MAX_FRICTION_EXP);
     if (status == WC_OK)
         status = wc_problem_check(P, err);
     if (status == WC_OK && P->n > WC_PLAN_MAX_FIXELS)

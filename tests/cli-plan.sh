@@ -166,6 +166,16 @@ expect 1 '^wrenchcone: <friction>:1:5: ' "$W" sweep --friction=1/5,x "$D/three-f
 expect 1 '^wrenchcone: <friction>:1:1: .*negative' "$W" sweep --friction=-1 "$D/three-fixels.wc"
 expect 1 '^wrenchcone: <width>:1:1: ' "$W" sweep --critical --width=0 "$D/three-fixels.wc"
 expect 1 '^wrenchcone: <width>:1:1: the width must not be negative' "$W" sweep --critical --width=-1 "$D/three-fixels.wc"
+# The search's cost is bounded: every step is a plan (at most 162 of them).
+expect 1 '^wrenchcone: <width>:1:1: the width must be at least 2^-96' "$W" sweep --critical --width=1e-30 "$D/three-fixels.wc"
+expect 1 "^wrenchcone: <width>:1:1: number too big in '1e-100000'" "$W" sweep --critical --width=1e-100000 "$D/three-fixels.wc"
+expect 1 '^wrenchcone: <max-friction>:1:1: the largest friction must be at most 2^32' "$W" sweep --critical --max-friction=4294967297 "$D/three-fixels.wc"
+expect 1 "^wrenchcone: <friction>:1:3: number too big in '1e100000'" "$W" sweep --friction=1,1e100000 "$D/three-fixels.wc"
+expect 1 "^wrenchcone: <wrench>:1:3: number too big in '1e400'" "$W" plan "$D/three-fixels.wc" 1 1e400 0
+# The smallest width allowed is accepted: the bracket ends dyadic.
+"$W" sweep --critical --width=1/79228162514264337593543950336 "$D/three-fixels-insert.wc" > "$tmp/o" 2> "$tmp/e" \
+    && grep -q '^  hi - lo = 1/79228162514264337593543950336 <= 1/79228162514264337593543950336 (98 plans)$' "$tmp/o" \
+    || fail "sweep at the smallest width: $(cat "$tmp/e")"
 "$W" random --fixels=7 --seed=1 > "$tmp/seven.wc" || fail "random --fixels=7"
 expect 1 'complete plan takes at most 6 fixels' "$W" plan --complete "$tmp/seven.wc"
 expect 2 'sweep needs --friction=LIST or --critical' "$W" sweep "$D/three-fixels.wc"

@@ -64,6 +64,15 @@ PY
 "$W" stability --length=-1 --bias 1 -1 0 "$D/disk-two-fixels.wc" > "$tmp/o" 2> "$tmp/e"
 [ $? -eq 1 ] && [ ! -s "$tmp/o" ] && grep -q '<length>' "$tmp/e" \
     || fail "negative length: want exit 1"
+# Command-line numbers obey the problem file's bound (1024 bits).
+"$W" classify "$D/disk-two-fixels.wc" 0 1e-400 0 > "$tmp/o" 2> "$tmp/e"
+[ $? -eq 1 ] && [ ! -s "$tmp/o" ] \
+    && grep -q "^wrenchcone: <wrench>:1:3: number too big in '1e-400'" "$tmp/e" \
+    || fail "huge wrench number: want exit 1 ($(cat "$tmp/e"))"
+"$W" stability --bias=1,1e999,0 "$D/disk-two-fixels.wc" > "$tmp/o" 2> "$tmp/e"
+[ $? -eq 1 ] && [ ! -s "$tmp/o" ] \
+    && grep -q "^wrenchcone: <bias>:1:3: number too big in '1e999'" "$tmp/e" \
+    || fail "huge bias number: want exit 1 ($(cat "$tmp/e"))"
 "$W" classify --bias=1,2,3 "$D/disk-two-fixels.wc" 0 0 0 > "$tmp/o" 2> /dev/null
 [ $? -eq 2 ] && [ ! -s "$tmp/o" ] || fail "--bias on classify: want exit 2"
 

@@ -231,6 +231,15 @@ void wc_critical_clear(wc_critical_t C);
 int wc_plan_critical(wc_critical_t C, const wc_problem_t P,
                      const fmpq_t width, const fmpq_t max, wc_error_t err);
 
+/* The bounds that keep the search to at most 2 + 32 + 128 plans: the
+   width is at least 2^-96 (about 1.3e-29) and max at most 2^32;
+   wc_plan_critical refuses others with WC_EINPUT.  The predicates say
+   whether a value is within them (and positive).  */
+#define WC_CRITICAL_MIN_WIDTH_EXP 96
+#define WC_CRITICAL_MAX_FRICTION_EXP 32
+int wc_critical_width_ok(const fmpq_t width);
+int wc_critical_max_ok(const fmpq_t max);
+
 /* Printing (planprint.c).  JSON as wrenchcone(1), JSON with extra keys: "fixels",
    "states" (each state's strings, Table 5), "redundant" (each
    syntactically redundant string with one containing it),

@@ -136,6 +136,38 @@ cleanup:
 }
 
 int
+wc_critical_width_ok(const fmpq_t width)
+{
+    fmpq_t b;
+    int ok;
+
+    if (fmpq_sgn(width) <= 0)
+        return 0;
+    fmpq_init(b);
+    fmpq_one(b);
+    fmpq_div_2exp(b, b, WC_CRITICAL_MIN_WIDTH_EXP);
+    ok = fmpq_cmp(width, b) >= 0;
+    fmpq_clear(b);
+    return ok;
+}
+
+int
+wc_critical_max_ok(const fmpq_t max)
+{
+    fmpq_t b;
+    int ok;
+
+    if (fmpq_sgn(max) <= 0)
+        return 0;
+    fmpq_init(b);
+    fmpq_one(b);
+    fmpq_mul_2exp(b, b, WC_CRITICAL_MAX_FRICTION_EXP);
+    ok = fmpq_cmp(max, b) <= 0;
+    fmpq_clear(b);
+    return ok;
+}
+
+int
 wc_plan_critical(wc_critical_t C, const wc_problem_t P, const fmpq_t width,
                  const fmpq_t max, wc_error_t err)
 {
@@ -147,10 +179,12 @@ wc_plan_critical(wc_critical_t C, const wc_problem_t P, const fmpq_t width,
 
     if ((status = _wc_plan_check_size(P, 0, err)) != WC_OK)
         return status;
-    if (fmpq_sgn(width) <= 0 || fmpq_sgn(max) <= 0)
+    if (!wc_critical_width_ok(width) || !wc_critical_max_ok(max))
         return wc_error_set(err, WC_EINPUT, NULL, 0, 0,
-                            "the width and the largest friction must be "
-                            "positive");
+                            "the width must be in [2^-%d, oo) and the "
+                            "largest friction in (0, 2^%d]",
+                            WC_CRITICAL_MIN_WIDTH_EXP,
+                            WC_CRITICAL_MAX_FRICTION_EXP);
     wc_plan_strings_init(T);
     fmpq_init(mid);
     fmpq_init(w);

@@ -110,8 +110,8 @@ _wc_tok_numeric(const wc_lexer * lx, const wc_token * t)
 int
 _wc_tok_number(wc_lexer * lx, const wc_token * t, fmpq_t x)
 {
-    int status = _wc_parse_number_bounded(x, lx->text + t->start,
-                                          t->end - t->start, lx->err);
+    int status = wc_parse_number_bounded(x, lx->text + t->start,
+                                         t->end - t->start, lx->err);
 
     if (status == WC_EINPUT)
     {

@@ -76,15 +76,7 @@ int _wc_tok_is(const wc_lexer * lx, const wc_token * t, const char * word);
    "friction MUS" is followed by MUK or by the next option.  */
 int _wc_tok_numeric(const wc_lexer * lx, const wc_token * t);
 
-/* wc_parse_number refusing, with the message "number too big in ...",
-   a number whose numerator or denominator has more than
-   WC_NUMBER_MAX_BITS bits (for p/q as written, for a decimal in lowest
-   terms), decided before any power of ten beyond 10^WC_NUMBER_MAX_BITS
-   is built: its cost is linear in len.  Implemented in number.c.  */
-int _wc_parse_number_bounded(fmpq_t x, const char * s, size_t len,
-                             wc_error_t err);
-
-/* x := the token as a number (_wc_parse_number_bounded), the error
+/* x := the token as a number (wc_parse_number_bounded), the error
    located at it.  */
 int _wc_tok_number(wc_lexer * lx, const wc_token * t, fmpq_t x);
 

@@ -303,8 +303,8 @@ bounded_decimal(fmpz_t num, fmpz_t den, const char * s,
 }
 
 int
-_wc_parse_number_bounded(fmpq_t x, const char * s, size_t len,
-                         wc_error_t err)
+wc_parse_number_bounded(fmpq_t x, const char * s, size_t len,
+                        wc_error_t err)
 {
     wc_numparts np;
     fmpz_t num, den;

@@ -107,12 +107,21 @@ int wc_problem_check(const wc_problem_t P, wc_error_t err);
    the token is).  */
 int wc_parse_number(fmpq_t x, const char * s, size_t len, wc_error_t err);
 
+/* wc_parse_number refusing, with the message "number too big in ...",
+   a number whose numerator or denominator has more than
+   WC_NUMBER_MAX_BITS bits (for p/q as written, for a decimal in lowest
+   terms), decided before any power of ten beyond 10^WC_NUMBER_MAX_BITS
+   is built: its cost is linear in len.  */
+int wc_parse_number_bounded(fmpq_t x, const char * s, size_t len,
+                            wc_error_t err);
+
 /* Limits of the problem file reader, so that no command's cost grows
    beyond bounds with the size of the numbers or of the shape (see
    wrenchcone(5)).  The numerator and denominator of every number in a
    problem file fit in WC_NUMBER_MAX_BITS bits (for p/q those written, for
-   a decimal those of its value in lowest terms); wc_parse_number itself
-   has no such bound.  A polygon has at most WC_POLYGON_MAX_VERTICES
+   a decimal those of its value in lowest terms), and so does every number
+   the program reads from its command line; wc_parse_number itself has no
+   such bound.  A polygon has at most WC_POLYGON_MAX_VERTICES
    vertices.  The message of a number over the bound says 1024: change it
    in number.c with the value.  */
 #define WC_NUMBER_MAX_BITS 1024
