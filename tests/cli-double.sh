@@ -130,5 +130,12 @@ run cone --method=paper --arith=double "$s4" nx
 grep -qxF "wrenchcone: <mode>:1:2: unknown mode letter 'x'" "$tmp/err" \
     || fail badmode "stderr: $(cat "$tmp/err")"
 
+# Data beyond double range: located at the number farthest from 1.
+printf 'mass 1\ninertia 1\ncom 0 0\nfriction 1/2\nfixel 1 0 normal 1 1 touching\nfixel 1e308 1e308 normal 1 1e300 touching\n' >"$tmp/big.wc"
+run cone --method=paper --arith=double "$tmp/big.wc" ss
+[ "$status" -eq 1 ] && [ ! -s "$tmp/out" ] || fail overflow "exit status $status, expected 1 and no output"
+grep -qxF "wrenchcone: $tmp/big.wc:6:1: numbers this far from 1 overflow double precision in the paper's system (--arith=double); the exact route has no such limit" "$tmp/err" \
+    || fail overflow "stderr: $(cat "$tmp/err")"
+
 [ "$failures" -eq 0 ] || exit 1
 exit 0

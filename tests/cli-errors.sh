@@ -177,6 +177,60 @@ bad_file polygon-too-many-vertices n \
 bad_file point-long ns \
     "4:7: point (1000000000000000000000000000000000000000000000000000000000000000..., 0) is not on the shape's boundary; give its normal"
 
+# Every command's size limit (wrenchcone(1), LIMITS): a located error at
+# the first fixel beyond it, exit 1, nothing on stdout.
+# floor N STATE: N fixels on a line, each on its own line 4 + i.
+floor() {
+    printf 'mass 1\ninertia 1\ncom 0 1\nfriction 1/2\n'
+    awk -v n="$1" -v s="$2" 'BEGIN { for (i = 1; i <= n; i++) print "fixel " i " 0 normal 0 1 " s }'
+}
+floor 101 touching >"$tmp/t101.wc"
+floor 501 near >"$tmp/n501.wc"
+floor 2001 near >"$tmp/n2001.wc"
+floor 10001 near >"$tmp/n10001.wc"
+limit() { # limit NAME LINE:COL: MESSAGE -- ARGS...
+    name=$1 want=$2
+    shift 2
+    run /dev/null "$@"
+    expect_status "limit-$name" 1
+    expect_stderr "limit-$name" "wrenchcone: $want"
+}
+limit classify "$tmp/t101.wc:105:1: classify handles at most 100 touching fixels (this is touching fixel 101)" \
+    classify "$tmp/t101.wc" 0 -1 0
+limit stability "$tmp/t101.wc:105:1: stability handles at most 100 touching fixels (this is touching fixel 101)" \
+    stability "$tmp/t101.wc"
+limit modes "$tmp/n501.wc:505:1: mode enumeration handles at most 500 fixels (this is fixel 501)" \
+    modes "$tmp/n501.wc"
+limit cone "$tmp/n2001.wc:2005:1: a wrench cone handles at most 2000 fixels (this is fixel 2001)" \
+    cone "$tmp/n2001.wc" u
+limit compare "$tmp/n2001.wc:2005:1: a wrench cone handles at most 2000 fixels (this is fixel 2001)" \
+    compare "$tmp/n2001.wc" u "$tmp/n2001.wc"
+limit file "$tmp/n10001.wc:10005:1: a problem holds at most 10000 fixels" \
+    feasible "$tmp/n10001.wc" s
+floor 11 near >"$tmp/n11.wc"
+limit plan "$tmp/n11.wc:15:1: an insertion plan handles at most 10 fixels (this is fixel 11)" \
+    plan "$tmp/n11.wc"
+limit sweep "$tmp/n11.wc:15:1: an insertion plan handles at most 10 fixels (this is fixel 11)" \
+    sweep --critical "$tmp/n11.wc"
+floor 7 near >"$tmp/n7.wc"
+limit complete "$tmp/n7.wc:11:1: the complete plan handles at most 6 fixels (this is fixel 7)" \
+    plan --complete "$tmp/n7.wc"
+# A read that fails (EIO; reading /proc/self/mem from offset 0 gives it
+# on Linux) is an I/O failure, exit 3; a directory is a wrong argument.
+if [ -r /proc/self/mem ]; then
+    run /dev/null cone /proc/self/mem u
+    expect_status read-eio 3
+    expect_stderr read-eio "wrenchcone: /proc/self/mem: read error: Input/output error"
+fi
+run /dev/null cone "$tmp" u
+expect_status read-directory 1
+expect_stderr read-directory "wrenchcone: $tmp: read error: Is a directory"
+
+# At the limit itself the same layout runs.
+floor 500 near >"$tmp/n500.wc"
+run /dev/null modes "$tmp/n500.wc"
+[ "$status" -eq 0 ] && [ -s "$tmp/out" ] || fail limit-modes-500 "exit status $status at 500 fixels"
+
 if [ "$failures" -ne 0 ]; then
     printf '%s: %d failure(s)\n' "$0" "$failures"
     exit 1

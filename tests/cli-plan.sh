@@ -177,7 +177,7 @@ expect 1 "^wrenchcone: <wrench>:1:3: number too big in '1e400'" "$W" plan "$D/th
     && grep -q '^  hi - lo = 1/79228162514264337593543950336 <= 1/79228162514264337593543950336 (98 plans)$' "$tmp/o" \
     || fail "sweep at the smallest width: $(cat "$tmp/e")"
 "$W" random --fixels=7 --seed=1 > "$tmp/seven.wc" || fail "random --fixels=7"
-expect 1 'complete plan takes at most 6 fixels' "$W" plan --complete "$tmp/seven.wc"
+expect 1 'seven.wc:13:1: the complete plan handles at most 6 fixels (this is fixel 7)$' "$W" plan --complete "$tmp/seven.wc"
 expect 2 'sweep needs --friction=LIST or --critical' "$W" sweep "$D/three-fixels.wc"
 expect 2 'plan takes PROBLEM and optionally FX FY TAU' "$W" plan "$D/three-fixels.wc" 1 2
 expect 2 "option '--complete' does not apply here" "$W" sweep --complete "$D/three-fixels.wc"

@@ -620,7 +620,9 @@ wc_classify(wc_classify_t R, const wc_problem_t P, const fmpq * g,
 
     wc_classify_clear(R);
     wc_classify_init(R);
-    if ((status = wc_problem_check(P, err)) != WC_OK)
+    if ((status = wc_problem_check(P, err)) != WC_OK
+        || (status = wc_problem_check_fixels(P, WC_CLASSIFY_MAX_TOUCHING, 1,
+                                             "classify", err)) != WC_OK)
         return status;
     n = P->n;
     _wc_stab_model_init(&m, P);

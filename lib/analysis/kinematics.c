@@ -514,6 +514,9 @@ wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err)
     int status = wc_problem_check(P, err);
 
     if (status == WC_OK)
+        status = wc_problem_check_fixels(P, WC_MODES_MAX_FIXELS, 0,
+                                         "mode enumeration", err);
+    if (status == WC_OK)
         status = enumerate(M, P, err);
     return status;
 }

@@ -59,9 +59,11 @@ void wc_modes_clear(wc_modes_t M);
    where planes meet, the arcs between them, the chambers), mapping each
    non-penetrating face to its mode.  Never looks at the 4^n strings; time
    O(n^2 log n + n F), F the number of non-penetrating faces (at most
-   O(n^2), and few when many fixels touch).  M may hold an earlier result (it is
-   replaced).  Returns WC_OK (M filled) or
-   WC_EINPUT when wc_problem_check fails.  */
+   O(n^2), and few when many fixels touch).  M may hold an earlier result
+   (it is replaced).  Returns WC_OK (M filled) or WC_EINPUT when
+   wc_problem_check fails or P has more than WC_MODES_MAX_FIXELS fixels
+   (the output alone can be O(n^3) bytes).  */
+#define WC_MODES_MAX_FIXELS 500
 int wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err);
 
 /* The certificate of one mode: either a witness twist (primitive

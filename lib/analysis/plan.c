@@ -76,15 +76,13 @@ _wc_plan_check_size(const wc_problem_t P, int complete, wc_error_t err)
 
     if (status != WC_OK)
         return status;
-    if (P->n > WC_PLAN_MAX_FIXELS)
-        return wc_error_set(err, WC_EINPUT, P->file, 0, 0,
-                            "insertion plans take at most %d fixels, not %ld",
-                            WC_PLAN_MAX_FIXELS, (long) P->n);
-    if (complete && P->n > WC_PLAN_MAX_FIXELS_COMPLETE)
-        return wc_error_set(err, WC_EINPUT, P->file, 0, 0,
-                            "the complete plan takes at most %d fixels, "
-                            "not %ld", WC_PLAN_MAX_FIXELS_COMPLETE,
-                            (long) P->n);
+    if ((status = wc_problem_check_fixels(P, WC_PLAN_MAX_FIXELS, 0,
+                                          "an insertion plan", err))
+        != WC_OK)
+        return status;
+    if (complete)
+        return wc_problem_check_fixels(P, WC_PLAN_MAX_FIXELS_COMPLETE, 0,
+                                       "the complete plan", err);
     return WC_OK;
 }
 

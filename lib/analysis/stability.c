@@ -440,7 +440,9 @@ wc_stability(wc_stability_t S, const wc_problem_t P, wc_error_t err)
 
     wc_stability_clear(S);
     wc_stability_init(S);
-    if ((status = wc_problem_check(P, err)) != WC_OK)
+    if ((status = wc_problem_check(P, err)) != WC_OK
+        || (status = wc_problem_check_fixels(P, WC_STABILITY_MAX_TOUCHING, 1,
+                                             "stability", err)) != WC_OK)
         return status;
     _wc_stab_model_init(&m, P);
     S->paper_vacuous = (m.t == 0);

@@ -316,6 +316,9 @@ parse_fixel(wc_parser * ps, long kwcol)
     wc_fixel_state state = WC_TOUCHING;
     int r, status;
 
+    if (ps->P->n >= WC_PROBLEM_MAX_FIXELS)
+        return _wc_lx_error(lx, kwcol, "a problem holds at most %d fixels",
+                            WC_PROBLEM_MAX_FIXELS);
     fmpq_init(point + 0);
     fmpq_init(point + 1);
     fmpq_init(normal + 0);
@@ -472,6 +475,12 @@ parse_line(wc_parser * ps)
     if (*seen)
         return _wc_lx_error_token(lx, &t, "duplicate '%s'");
     *seen = 1;
+    if (seen == &ps->seen_mass)
+        P->mass_line = lx->line;
+    else if (seen == &ps->seen_inertia)
+        P->inertia_line = lx->line;
+    else if (seen == &ps->seen_com)
+        P->com_line = lx->line;
 
     if (seen == &ps->seen_name)
         return parse_name(ps);

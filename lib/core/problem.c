@@ -140,6 +140,9 @@ wc_problem_set(wc_problem_t Q, const wc_problem_t P)
     fmpq_set(Q->mu_k, P->mu_k);
     Q->shape = P->shape;
     Q->shape_line = P->shape_line;
+    Q->mass_line = P->mass_line;
+    Q->inertia_line = P->inertia_line;
+    Q->com_line = P->com_line;
     if (P->shape_len > 0)
     {
         if ((Q->shape_data = malloc(sizeof(fmpq) * P->shape_len)) == NULL)
@@ -204,6 +207,28 @@ wc_problem_check(const wc_problem_t P, wc_error_t err)
         if (f->state != WC_TOUCHING && f->state != WC_NEAR)
             return wc_error_set(err, WC_EINPUT, P->file, f->line, f->col,
                                 "fixel %ld has an unknown state", (long) i + 1);
+    }
+    return WC_OK;
+}
+
+int
+wc_problem_check_fixels(const wc_problem_t P, slong max, int touching,
+                        const char * what, wc_error_t err)
+{
+    slong i, count = 0;
+
+    for (i = 0; i < P->n; i++)
+    {
+        const wc_fixel_struct * f = P->fixels + i;
+
+        if (touching && f->state != WC_TOUCHING)
+            continue;
+        if (++count > max)
+            return wc_error_set(err, WC_EINPUT, P->file, f->line, f->col,
+                                "%s handles at most %ld %sfixels (this is "
+                                "%sfixel %ld)", what, (long) max,
+                                touching ? "touching " : "",
+                                touching ? "touching " : "", (long) count);
     }
     return WC_OK;
 }

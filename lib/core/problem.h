@@ -58,6 +58,9 @@ typedef struct
     slong shape_len;            /* number of fmpq in shape_data */
     fmpq * shape_data;
     long shape_line;
+    long mass_line;             /* where mass, inertia and com are written */
+    long inertia_line;          /* (0 when not read from a file) */
+    long com_line;
     slong n;                    /* number of fixels, >= 1 after parsing */
     wc_fixel_struct * fixels;
 }
@@ -100,6 +103,15 @@ int wc_problem_fprint(FILE * out, const wc_problem_t P);
    an abort.  */
 int wc_problem_check(const wc_problem_t P, wc_error_t err);
 
+/* WC_OK when P has at most max fixels (with touching != 0: at most max
+   touching fixels); else WC_EINPUT located at the first fixel beyond the
+   limit, saying that what ("classify", "insertion plans", ...) handles at
+   most max of them.  Every command has such a limit (wrenchcone(1),
+   LIMITS), so that no input makes it run for minutes or exhaust memory
+   silently.  */
+int wc_problem_check_fixels(const wc_problem_t P, slong max, int touching,
+                            const char * what, wc_error_t err);
+
 /* Parse one exact number: an optional sign, then an integer, a fraction
    p/q, or a decimal with optional exponent (0.2 = 1/5, 1.5e-3 = 3/2000).
    The whole of s[0..len) must be the number.  Returns WC_OK, or WC_EINPUT
@@ -122,10 +134,13 @@ int wc_parse_number_bounded(fmpq_t x, const char * s, size_t len,
    a decimal those of its value in lowest terms), and so does every number
    the program reads from its command line; wc_parse_number itself has no
    such bound.  A polygon has at most WC_POLYGON_MAX_VERTICES
-   vertices.  The message of a number over the bound says 1024: change it
-   in number.c with the value.  */
+   vertices, and a problem at most WC_PROBLEM_MAX_FIXELS fixels (each
+   command has a lower limit of its own: wc_problem_check_fixels).  The
+   message of a number over the bound says 1024: change it in number.c
+   with the value.  */
 #define WC_NUMBER_MAX_BITS 1024
 #define WC_POLYGON_MAX_VERTICES 1000
+#define WC_PROBLEM_MAX_FIXELS 10000
 
 #ifdef __cplusplus
 }

@@ -85,14 +85,50 @@ set_column(d_mat_t J, slong col, double dx, double dy, double rx, double ry)
     d_mat_entry(J, 2, col) = rx * dy - ry * dx;
 }
 
+/* Keep in *e the line and column of x when its binary exponent is the
+   farthest from 0 so far.  */
+static void
+farthest(slong * e, long * line, long * col, const fmpq_t x, long xl,
+         long xc)
+{
+    slong b = fmpz_bits(fmpq_numref(x)) - fmpz_bits(fmpq_denref(x));
+
+    if (b < 0)
+        b = -b;
+    if (!fmpq_is_zero(x) && b > *e)
+    {
+        *e = b;
+        *line = xl;
+        *col = xc;
+    }
+}
+
 /* The error for data beyond double range (or cddlib's results beyond
-   it).  */
+   it), located at the number of the problem farthest from 1 in
+   magnitude: the one that makes the products overflow.  */
 static int
 overflow(wc_error_t err, const wc_problem_t P)
 {
-    return wc_error_set(err, WC_EINPUT, P->file, 0, 0,
-                        "the problem's numbers overflow double precision "
-                        "(--arith=double)");
+    slong e = -1, i, k;
+    long line = 0, col = 0;
+
+    farthest(&e, &line, &col, P->mass, P->mass_line, 1);
+    farthest(&e, &line, &col, P->inertia, P->inertia_line, 1);
+    for (k = 0; k < 2; k++)
+        farthest(&e, &line, &col, P->com + k, P->com_line, 1);
+    for (i = 0; i < P->n; i++)
+        for (k = 0; k < 2; k++)
+        {
+            const wc_fixel_struct * f = P->fixels + i;
+
+            farthest(&e, &line, &col, f->point + k, f->line, f->col);
+            farthest(&e, &line, &col, f->normal + k, f->line, f->col);
+        }
+    return wc_error_set(err, WC_EINPUT, P->file, line > 0 ? line : 0,
+                        line > 0 ? col : 0, "numbers this far from 1 "
+                        "overflow double precision in the paper's system "
+                        "(--arith=double); the exact route has no such "
+                        "limit");
 }
 
 /* J (3 x 2n) and M^-1 (3 x 3, both zero on entry) from the problem's

@@ -35,6 +35,11 @@ wc_mode_check(const wc_problem_t P, const char * mode, wc_mode_table table,
 
     if ((status = wc_problem_check(P, err)) != WC_OK)
         return status;
+    if (table == WC_TABLE_CONE
+        && (status = wc_problem_check_fixels(P, WC_CONE_MAX_FIXELS, 0,
+                                             "a wrench cone", err))
+           != WC_OK)
+        return status;
     /* The length is checked first: with a letter missing or extra, the
        letters after it would be read against the wrong fixels.  */
     if (len != (size_t) P->n)

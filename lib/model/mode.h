@@ -19,8 +19,13 @@ extern "C" {
    on touching fixels, s a on near ones.  */
 typedef enum { WC_TABLE_CONE = 2, WC_TABLE_KINEMATIC = 1 } wc_mode_table;
 
-/* Check P (wc_problem_check) and that mode has one letter per fixel of P, each allowed in that
-   fixel's state under the given table.  Returns WC_OK, or WC_EINPUT with
+/* The most fixels a wrench cone is computed for (its cost grows as n^2;
+   see wrenchcone(1), LIMITS).  */
+#define WC_CONE_MAX_FIXELS 2000
+
+/* Check P (wc_problem_check), for Table 2 that P has at most
+   WC_CONE_MAX_FIXELS fixels, and that mode has one letter per fixel of P,
+   each allowed in that fixel's state under the given table.  Returns WC_OK, or WC_EINPUT with
    err located in the mode string itself: file "<mode>", line 1, col the
    1-based position of the offending letter (or one past the end for a
    short mode).  */
