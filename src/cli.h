@@ -89,6 +89,11 @@ int cli_parse_numbers(fmpq * v, char ** args, slong k, const char * what,
 /* Flush stdout; a failed write is reported, and is an I/O failure.  */
 int cli_finish_output(void);
 
+/* GMP's and FLINT's allocators: running out of memory writes
+   "wrenchcone: out of memory" to stderr and exits with status 3, never
+   aborts or prints on stdout (cli-memory.c).  */
+void cli_install_memory_handlers(void);
+
 /* Write a certificate file with put(f, data); never leaves a partial file
    this run created.  */
 int cli_write_certificate(const char * path,

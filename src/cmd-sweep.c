@@ -112,6 +112,9 @@ parse(sweep_options * o, const cli_command * self, int argc, char ** argv)
     return c == CLI_EXIT ? p.status : -1;
 }
 
+/* The longest --friction list.  */
+#define CLI_MAX_FRICTIONS 1000
+
 /* A comma-separated list of exact numbers, located as <what>:1:COL.  */
 static int
 parse_list(fmpq ** v, slong * count, const char * s, const char * what,
@@ -122,7 +125,14 @@ parse_list(fmpq ** v, slong * count, const char * s, const char * what,
     int status = WC_OK;
 
     for (i = 0; s[i] != '\0'; i++)
-        n += s[i] == ',';
+        if ((n += s[i] == ',') > CLI_MAX_FRICTIONS)
+        {
+            *v = NULL;
+            *count = 0;
+            return wc_error_set(err, WC_EINPUT, what, 1, i + 2,
+                                "at most %d values (each costs a plan)",
+                                CLI_MAX_FRICTIONS);
+        }
     *v = flint_malloc(sizeof(fmpq) * n);
     for (i = 0; i < n; i++)
         fmpq_init(*v + i);

@@ -92,6 +92,7 @@ main(int argc, char ** argv)
     const cli_command * c;
     int status;
 
+    cli_install_memory_handlers();
     if (argc < 2)
     {
         fputs(usage, stderr);

@@ -226,6 +226,18 @@ run /dev/null cone "$tmp" u
 expect_status read-directory 1
 expect_stderr read-directory "wrenchcone: $tmp: read error: Is a directory"
 
+# Out of memory: one line on stderr, exit 3, nothing on stdout -- never
+# FLINT's abort with its message on stdout.  500 fixels in general
+# position have about 125,000 feasible modes: far more than 50 MB.
+# (Sanitizers reserve terabytes of address space: no ulimit -v there.)
+if [ -z "${WC_SAN:-}" ]; then
+    printf 'mass 1\ninertia 1\ncom 0 1\nfriction 1/2\n' >"$tmp/g500.wc"
+    awk 'BEGIN { for (i = 1; i <= 500; i++) print "fixel " i " " (i * i % 97) " normal " (i % 7 - 3) " 5 near" }' >>"$tmp/g500.wc"
+    status=$( (ulimit -v 50000 && "$WRENCHCONE" modes "$tmp/g500.wc" >"$tmp/out" 2>"$tmp/err"); echo $?)
+    expect_status out-of-memory 3
+    expect_stderr out-of-memory "wrenchcone: out of memory"
+fi
+
 # At the limit itself the same layout runs.
 floor 500 near >"$tmp/n500.wc"
 run /dev/null modes "$tmp/n500.wc"

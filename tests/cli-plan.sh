@@ -170,6 +170,7 @@ expect 1 '^wrenchcone: <width>:1:1: the width must not be negative' "$W" sweep -
 expect 1 '^wrenchcone: <width>:1:1: the width must be at least 2^-96' "$W" sweep --critical --width=1e-30 "$D/three-fixels.wc"
 expect 1 "^wrenchcone: <width>:1:1: number too big in '1e-100000'" "$W" sweep --critical --width=1e-100000 "$D/three-fixels.wc"
 expect 1 '^wrenchcone: <max-friction>:1:1: the largest friction must be at most 2^32' "$W" sweep --critical --max-friction=4294967297 "$D/three-fixels.wc"
+expect 1 '^wrenchcone: <friction>:1:2001: at most 1000 values (each costs a plan)$' "$W" sweep --friction="$(awk 'BEGIN { s = "1"; for (i = 1; i <= 1000; i++) s = s ",1"; print s }')" "$D/three-fixels.wc"
 expect 1 "^wrenchcone: <friction>:1:3: number too big in '1e100000'" "$W" sweep --friction=1,1e100000 "$D/three-fixels.wc"
 expect 1 "^wrenchcone: <wrench>:1:3: number too big in '1e400'" "$W" plan "$D/three-fixels.wc" 1 1e400 0
 # The smallest width allowed is accepted: the bracket ends dyadic.
