@@ -32,5 +32,6 @@
 #include "analysis/stability.h"
 #include "analysis/plan.h"
 #include "core/version.h"
+#include "core/progress.h"
 
 #endif

@@ -24,9 +24,13 @@
    ambiguous between two of them.  */
 #define CLI_FOREIGN 0x4000
 
+/* --progress's code.  */
+#define CLI_PROGRESS 0x2000
+
 static const struct option everyones[] = {
     { "help", no_argument, NULL, 'h' },
     { "version", no_argument, NULL, 'V' },
+    { "progress", no_argument, NULL, CLI_PROGRESS },
     { NULL, 0, NULL, 0 }
 };
 
@@ -91,7 +95,9 @@ cli_option(cli_options * p, int argc, char ** argv)
         fputs(PROG ": internal error: too many options\n", stderr);
         return CLI_EXIT;
     }
-    c = getopt_long(argc, argv, "hV", p->table, &idx);
+    while ((c = getopt_long(argc, argv, "hV", p->table, &idx))
+           == CLI_PROGRESS)
+        cli_progress_force();
     if (c == -1)
         return CLI_DONE;
     if (c >= CLI_FOREIGN)

@@ -32,6 +32,7 @@ cli_report(const wc_error_t err, int status)
 {
     char * s = wc_error_format(err);
 
+    cli_progress_clear();
     fprintf(stderr, PROG ": %s\n", s != NULL ? s : "out of memory");
     free(s);
     return status;

@@ -89,6 +89,15 @@ int cli_parse_numbers(fmpq * v, char ** args, slong k, const char * what,
 /* Flush stdout; a failed write is reported, and is an I/O failure.  */
 int cli_finish_output(void);
 
+/* Progress on stderr (cli-progress.c): cli_progress_force for
+   --progress, cli_progress_start before a command runs (it installs the
+   library's hook when stderr is a terminal or progress is forced), and
+   cli_progress_clear to erase a terminal line before anything else is
+   written to stderr.  */
+void cli_progress_force(void);
+void cli_progress_start(void);
+void cli_progress_clear(void);
+
 /* GMP's and FLINT's allocators: running out of memory writes
    "wrenchcone: out of memory" to stderr and exits with status 3, never
    aborts or prints on stdout (cli-memory.c).  */

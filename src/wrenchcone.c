@@ -42,7 +42,8 @@ static const char usage[] =
     "  random [OPTIONS]       print a reproducible random problem (a .wc file)\n"
     "\n"
     "PROBLEM is a .wc problem file (see wrenchcone(5)); '-' reads standard input.\n"
-    "Options of every command: --format=text|json, -h/--help, -V/--version.\n"
+    "Options of every command: --format=text|json, -h/--help, -V/--version,\n"
+    "--progress (progress on stderr, also when it is not a terminal).\n"
     "Run '" PROG " COMMAND --help' for a command's options.\n"
     "\n"
     "Exit status: 0 success (an empty cone is an answer), 1 bad input,\n"
@@ -117,7 +118,11 @@ main(int argc, char ** argv)
         status = cli_usage_error(NULL, "'%s' is not implemented in this "
                                  "version", argv[1]);
     else
+    {
+        cli_progress_start();
         status = run(c, argc - 1, argv + 1);
+        cli_progress_clear();
+    }
     flint_cleanup_master();
     return status;
 }

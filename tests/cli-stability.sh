@@ -128,6 +128,19 @@ grep -q '^strongly stable (exact semantics, Pang and Trinkle): yes$' "$tmp/t" \
     && grep -q '^strongly stable (paper semantics, eq. 19): no$' "$tmp/t" \
     || fail "classify disagrees with the stability witness"
 
+# --progress: reports on stderr (one per line when it is not a terminal),
+# the first and last of each stage always; stdout unchanged.
+"$W" stability "$D/peg-in-hole.wc" > "$tmp/quiet" 2> "$tmp/e" && [ ! -s "$tmp/e" ] \
+    || fail "stability writes on stderr without --progress"
+"$W" stability --progress "$D/peg-in-hole.wc" > "$tmp/loud" 2> "$tmp/e" \
+    || fail "stability --progress: exit $?"
+cmp -s "$tmp/quiet" "$tmp/loud" || fail "--progress changes stdout"
+grep -v -x 'wrenchcone: [a-z ]*: [0-9]*/[0-9]* ([0-9]*%)' "$tmp/e" && fail "--progress: a line out of format"
+for want in 'moving faces: 0/9 (0%)' 'moving faces: 9/9 (100%)' \
+            'cells of the sets: 0/1687 (0%)' 'cells of the sets: 1687/1687 (100%)'; do
+    grep -q -x "wrenchcone: $want" "$tmp/e" || fail "--progress: no line '$want'"
+done
+
 # No touching fixel: eq. 19 holds vacuously, and both outputs say so.
 "$W" stability "$D/three-fixels.wc" > "$tmp/t" 2> /dev/null || fail "stability three-fixels"
 grep -q '^note: no fixel touches, so eq. 19 is vacuous' "$tmp/t" || fail "no vacuity note (stability)"

@@ -21,6 +21,7 @@
 #include <flint/fmpz_vec.h>
 #include <flint/fmpq_vec.h>
 
+#include "core/tick.h"
 #include "exact/lp.h"
 #include "exact/vec3.h"
 #include "analysis/kinematics.h"
@@ -377,6 +378,7 @@ stability_sets(wc_stability_t S, wc_error_t err)
     {
         int w, z;
 
+        _wc_tick("cells of the sets", i, S->cells->count);
         _fmpq_vec_set_fmpz_vec(g, WC_ROW(S->cells->point, i), 3);
         w = wc_cone_contains(S->weak, g);
         in_exact[i] = w && !in_exact_moving(S, g);
@@ -395,6 +397,7 @@ stability_sets(wc_stability_t S, wc_error_t err)
             S->diff_in_exact = in_exact[i];
         }
     }
+    _wc_tick("cells of the sets", S->cells->count, S->cells->count);
     S->diff_origin_only = S->differ && !nonzero;
     if ((status = wc_set_from_cells(S->strong, S->cells, in_exact, err))
         == WC_OK

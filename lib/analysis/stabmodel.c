@@ -11,6 +11,7 @@
 
 #include <flint/fmpq_vec.h>
 
+#include "core/tick.h"
 #include "model/model.h"
 #include "exact/lp.h"
 #include "exact/vec3.h"
@@ -195,11 +196,13 @@ _wc_stab_moving_faces(const _wc_stab_model * m,
     status = touching_modes(T, m, err);
     for (i = 0; i < T->count && status == WC_OK; i++)
     {
+        _wc_tick("moving faces", i, T->count);
         y = _wc_stab_expand(m, T->modes[i]);
         if (!_wc_stab_all_n(m, y))
             status = visit(ctx, y, 0);
         free(y);
     }
+    _wc_tick("moving faces", T->count, T->count);
     if (status == WC_OK && m->shared)
     {
         y = _wc_stab_expand(m, T->modes[0]);

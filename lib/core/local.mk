@@ -1,5 +1,5 @@
 # lib/core -- errors, the problem and its reader, numbers, JSON reading,
-# reproducible random problems, versions.
+# reproducible random problems, versions, the progress hook.
 
 lib_libwc_la_SOURCES += \
 	lib/core/error.c \
@@ -16,16 +16,19 @@ lib_libwc_la_SOURCES += \
 	lib/core/random.c \
 	lib/core/json.c \
 	lib/core/jsontree.c \
-	lib/core/version.c
+	lib/core/version.c \
+	lib/core/progress.c
 wccoredir = $(pkgincludedir)/core
 wccore_HEADERS = \
 	lib/core/error.h \
 	lib/core/problem.h \
 	lib/core/random.h \
-	lib/core/version.h
+	lib/core/version.h \
+	lib/core/progress.h
 noinst_HEADERS += \
 	lib/core/json.h \
 	lib/core/text.h \
 	lib/core/polygon.h \
 	lib/core/lexer.h \
-	lib/core/randgen.h
+	lib/core/randgen.h \
+	lib/core/tick.h

@@ -28,6 +28,7 @@
 
 #include <flint/fmpz_vec.h>
 
+#include "core/tick.h"
 #include "exact/vec3.h"
 #include "exact/arrangement.h"
 
@@ -410,6 +411,7 @@ _wc_arrangement_walk(const _wc_arrangement_t A, _wc_face_fn visit,
 
     for (p = 0; p < m && status == WC_OK; p++)
     {
+        _wc_tick("arrangement planes", p, m);
         if (_wc_arrangement_nlines_on(A, p) == 0)
             status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                   "internal error: arrangement: plane %ld "
@@ -417,6 +419,7 @@ _wc_arrangement_walk(const _wc_arrangement_t A, _wc_face_fn visit,
         else
             status = walk_plane(&W, p, err);
     }
+    _wc_tick("arrangement planes", m, m);
 
     for (i = 0; i < m; i++)
     {
