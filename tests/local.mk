@@ -9,7 +9,8 @@ tests_libwctest_la_SOURCES = \
 	tests/ref-lp.c tests/ref-lp.h \
 	tests/ref-kin.c tests/ref-kin.h \
 	tests/ref-stab.c tests/ref-stab.h \
-	tests/ref-plan.c tests/ref-plan.h
+	tests/ref-plan.c tests/ref-plan.h \
+	tests/ref-faces.c tests/ref-faces.h
 
 TEST_LIBS = tests/libwctest.la lib/libwc.la
 C_TESTS = \
@@ -20,6 +21,7 @@ C_TESTS = \
 	tests/t-routes \
 	tests/t-modes \
 	tests/t-verify \
+	tests/t-faces \
 	tests/t-random \
 	tests/t-double \
 	tests/t-compare \

@@ -237,15 +237,49 @@ int _wc_check_mode_certificate(wc_check_reader * c,
                                int * feasible);
 
 /* ------------------------------------------------------------------ */
-/* The moving faces, from the arrangement (faces.c).                   */
+/* The cone of the directions x with h . x >= 0 (cone.c).              */
 
-/* A set of strings of n + 1 bytes each, malloc'd; all zero when empty.  */
+/* K = span(L[0 .. dl)) + cone(r[0 .. nr)), primitive integer vectors;
+   with dl = 0 and nr >= 3 the rays go around K in cyclic order.  work
+   counts the products h . v computed.  */
+typedef struct
+{
+    int dl;
+    mpz_t * L;                  /* 9 */
+    size_t nr, cap;
+    mpz_t * r, * o;             /* 3 cap each: rays, scratch */
+    mpz_t * d;                  /* cap, scratch */
+    mpz_t * v;                  /* 3, scratch */
+    mpz_t a, c, t;
+    unsigned long work;
+}
+wc_check_cone;
+
+/* v = v / gcd of its entries; t scratch.  */
+void _wc_check_zprimitive(mpz_t * v, mpz_t t);
+
+/* K = R^3, with room for cuts cuts.  WC_OK or WC_EINTERNAL; either way
+   _wc_check_cone_clear frees.  */
+int _wc_check_cone_init(wc_check_cone * K, size_t cuts);
+void _wc_check_cone_clear(wc_check_cone * K);
+
+/* K = K cut by h . x >= 0 (h a nonzero integer vector).  WC_OK, or
+   WC_EINTERNAL after more cuts than room was made for.  */
+int _wc_check_cone_cut(wc_check_cone * K, mpz_t * h);
+
+/* ------------------------------------------------------------------ */
+/* The moving faces (faces.c).                                         */
+
+/* A set of strings of n + 1 bytes each, malloc'd; all zero when empty.
+   work: how many products of integer vectors the walk that made the set
+   computed (its cost; the tests bound it).  */
 typedef struct
 {
     size_t count;
     size_t cap;
     char ** s;
     int oom;
+    unsigned long work;
 }
 wc_check_strings;
 

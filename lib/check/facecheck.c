@@ -335,7 +335,7 @@ int
 _wc_check_faces(wc_check_scratch * X)
 {
     const wc_check_stability * S = X->S;
-    wc_check_strings T = { 0, 0, NULL, 0 };
+    wc_check_strings T = { 0, 0, NULL, 0, 0 };
     size_t * seen = NULL, rot_seen[2] = { 0, 0 }, k;
     int shared = shared_point(&S->P), holds = -1;
 

@@ -9,6 +9,7 @@ lib_libwc_la_SOURCES += \
 	lib/check/read.c \
 	lib/check/problem.c \
 	lib/check/feasible.c \
+	lib/check/cone.c \
 	lib/check/faces.c \
 	lib/check/stabread.c \
 	lib/check/stabcheck.c \
