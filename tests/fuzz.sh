@@ -93,7 +93,7 @@ rm -rf "$work/corpus" "$work/gen"
 mkdir -p "$work/gen" || exit 99
 for t in $FUZZ_TARGETS; do
     mkdir -p "$work/corpus/$t" || exit 99
-    seed "$t" "$srcdir"/fuzz/corpus/"$t"/*
+    seed "$t" "$srcdir"/fuzz/corpus/"$t"/* "$srcdir"/fuzz/regressions/"$t"/*
 done
 seed parse "$srcdir"/data/*.wc "$srcdir"/data/corpus/*.wc "$srcdir"/tests/bad/*.wc
 seed verify "$srcdir"/tests/certs/*.json "$srcdir"/tests/golden/*.json
@@ -107,7 +107,15 @@ for p in "$srcdir"/data/*.wc "$srcdir"/data/corpus/*.wc; do
         "$W" feasible --format=json "$p" "$m" >"$g-$m.cert" 2>/dev/null
         seed verify "$g-$m.cert"
     done <"$g.modes"
-    "$W" stability --certificate="$g.stab" "$p" >/dev/null 2>&1 && seed verify "$g.stab"
+    case $p in
+    */data/corpus/*) ;;
+    *) j=0
+        for w in "0 -1 0" "-1 -1 -1" "0 1 0" "1 -2 1/2"; do
+            j=$((j + 1))
+            "$W" classify --certificate="$g-stab$j.json" "$p" $w >/dev/null 2>&1 \
+                && seed verify "$g-stab$j.json"
+        done ;;
+    esac
     case $p in
     */data/corpus/*) awk -v g="$g" 'NR <= 3 { print > (g "-cone" NR ".json") }' \
         "${p%.wc}.cones.json" 2>/dev/null
@@ -131,14 +139,21 @@ for t in $FUZZ_TARGETS; do
         status=1
         continue
     fi
+    case $t in
+    verify) max_len=16384 ;;
+    compare) max_len=8192 ;;
+    cone) max_len=64 ;;
+    *) max_len=4096 ;;
+    esac
     dict=
     [ -f "$srcdir/fuzz/$t.dict" ] && dict=-dict=$srcdir/fuzz/$t.dict
     mkdir -p "$work/crash" || exit 99
     rm -f "$work/crash/$t-"*
     LSAN_OPTIONS="suppressions=$srcdir/tests/lsan.supp:print_suppressions=0" \
+    ASAN_OPTIONS=${ASAN_OPTIONS:-quarantine_size_mb=32:malloc_context_size=10} \
     UBSAN_OPTIONS=print_stacktrace=1 \
         nice "$exe" -max_total_time="$FUZZ_SECONDS" -print_final_stats=1 \
-        -timeout=25 -rss_limit_mb=2048 -max_len=4096 \
+        -timeout=25 -rss_limit_mb=2048 -max_len=$max_len \
         -artifact_prefix="$work/crash/$t-" $dict $FUZZ_ARGS \
         "$work/corpus/$t" >"$work/$t.log" 2>&1
     rc=$?
