@@ -54,8 +54,8 @@ if [ -f "$srcdir/config.status" ]; then
     fi
     src=$work/src
     rm -rf "$src" && mkdir -p "$src" || exit 99
-    ( cd "$srcdir" && git ls-files -z | xargs -0 tar cf - ) | ( cd "$src" && tar xf - ) \
-        || exit 99
+    git -C "$srcdir" ls-files -z | tar -C "$srcdir" --null -T - -cf - \
+        | tar -C "$src" -xf - || exit 99
 fi
 if [ ! -x "$src/configure" ]; then
     ( cd "$src" && autoreconf -fi ) >"$work/autoreconf.log" 2>&1 \
