@@ -36,68 +36,16 @@ const struct option cmd_verify_options[] = {
     { NULL, 0, NULL, 0 }
 };
 
-/* What verify found.  */
-typedef struct
-{
-    int holds;
-    char * reason;      /* why not, when it does not hold */
-    char * summary;     /* what holds */
-    char * mode;        /* a mode-feasibility certificate's mode, or NULL */
-    int feasible;       /* and its verdict */
-}
-verdict;
-
-/* A mode-feasibility certificate also gives its mode and verdict as keys
-   of the JSON answer; any other kind has no mode.  */
-static void
-find_mode(verdict * v, const char * text, size_t len, const char * path)
-{
-    wc_error_t e2;
-    int h2;
-    char * r2 = NULL;
-
-    wc_error_init(e2);
-    if (wc_verify_certificate(&h2, &r2, &v->mode, &v->feasible, text, len,
-                              path, e2) != WC_OK)
-        v->mode = NULL;
-    free(r2);
-    wc_error_clear(e2);
-}
-
-static void
-print_json(const verdict * v)
-{
-    fprintf(stdout, "{\"holds\": %s", v->holds ? "true" : "false");
-    if (v->mode != NULL)
-    {
-        fputs(", \"mode\": ", stdout);
-        wc_fprint_json_string(stdout, v->mode);
-        fprintf(stdout, ", \"feasible\": %s", v->feasible ? "true" : "false");
-    }
-    else
-    {
-        fputs(", \"summary\": ", stdout);
-        wc_fprint_json_string(stdout, v->summary != NULL ? v->summary : "");
-    }
-    if (!v->holds)
-    {
-        fputs(", \"reason\": ", stdout);
-        wc_fprint_json_string(stdout, v->reason != NULL ? v->reason : "");
-    }
-    fputs("}\n", stdout);
-}
-
 int
 cmd_verify(const cli_command * self, int argc, char ** argv)
 {
     cli_options p;
     cli_format fmt = FMT_TEXT;
-    int c, status;
+    int c, status, holds = 0;
     char * text = NULL;
     const char * path;
     size_t len = 0;
     wc_error_t err;
-    verdict v = { 0, NULL, NULL, NULL, 0 };
 
     cli_options_init(&p, self);
     while ((c = cli_option(&p, argc, argv)) >= 0)
@@ -112,30 +60,21 @@ cmd_verify(const cli_command * self, int argc, char ** argv)
     path = argv[optind];
     wc_error_init(err);
     status = cli_read_all(&text, &len, path, CLI_MAX_CERTIFICATE_BYTES, err);
+    /* The verdict is the check library's (lib/check/report.c), shared
+       with the standalone wrenchcone-verify.  */
     if (status == WC_OK)
-        status = wc_verify(&v.holds, &v.reason, &v.summary, text, len,
-                           cli_input_name(path), err);
+        status = wc_verify_fprint(stdout, &holds, text, len,
+                                  cli_input_name(path), fmt == FMT_JSON,
+                                  err);
     if (status != WC_OK)
         cli_report(err, status);
     else
     {
-        if (fmt == FMT_JSON)
-        {
-            find_mode(&v, text, len, path);
-            print_json(&v);
-        }
-        else if (v.holds)
-            printf("certificate holds: %s\n", v.summary);
-        else
-            printf("certificate does not hold: %s\n", v.reason);
         status = cli_finish_output();
-        if (status == WC_OK && !v.holds)
+        if (status == WC_OK && !holds)
             status = WC_EDISAGREE;
     }
     free(text);
-    free(v.reason);
-    free(v.mode);
-    free(v.summary);
     wc_error_clear(err);
     return status;
 }

@@ -11,3 +11,11 @@ src_wrenchcone_SOURCES = src/wrenchcone.c src/commands.h \
 	src/cmd-random.c src/cmd-compare.c src/cmd-classify.c \
 	src/cmd-stability.c src/cmd-plan.c src/cmd-sweep.c
 src_wrenchcone_LDADD = lib/libwc.la
+
+# The standalone certificate checker: the check library and GMP, nothing
+# else (no -DGMPRATIONAL, no FLINT, no cddlib), so that a FLINT or cddlib
+# call in the checker cannot link (tests/verify-standalone.sh).
+bin_PROGRAMS += src/wrenchcone-verify
+src_wrenchcone_verify_SOURCES = src/wrenchcone-verify.c
+src_wrenchcone_verify_CPPFLAGS = -I$(top_srcdir)/lib
+src_wrenchcone_verify_LDADD = lib/libwccheck.la $(GMP_LIBS)

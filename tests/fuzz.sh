@@ -74,7 +74,9 @@ if [ ! -f "$build/Makefile" ] || [ "$(cat "$build/src.path" 2>/dev/null)" != "$s
 fi
 ( cd "$build" && make -j2 lib/libwc.la src/wrenchcone ) >"$work/make.log" 2>&1 \
     || { echo "fuzz: building the library failed (see $work/make.log)"; exit 99; }
-libs=$(sed -n 's/^LIBS = //p' "$build/Makefile")
+# The libraries: LIBS and the per-library variables configure sets
+# (each program names what it links; the fuzz targets need them all).
+libs=$(sed -n 's/^\(CDD_LIBS\|FLINT_LIBS\|GMP_LIBS\|LIBS\) = //p' "$build/Makefile" | tr '\n' ' ')
 W=$build/src/wrenchcone
 
 # seed TARGET FILE...: copy files into the target's corpus.

@@ -1,6 +1,7 @@
 #!/bin/sh
 # install.sh -- the installed library works for a program outside the
 # tree: `make install` into a temporary prefix, then
+#   0. the standalone checker bin/wrenchcone-verify is installed and runs;
 #   1. the shared library exports exactly the wc_ functions that the
 #      installed headers declare (nm -D), nothing internal;
 #   2. tests/install/one-cone.c, which includes <wrenchcone/wrenchcone.h>,
@@ -24,6 +25,13 @@ prefix=$tmp/prefix
 (cd "$top_builddir" && env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL \
     "${MAKE:-make}" install prefix="$prefix" > "$tmp/log" 2>&1) \
     || { cat "$tmp/log" >&2; echo "FAIL: make install" >&2; exit 1; }
+
+# The standalone checker is installed, runs, and agrees with the program.
+v=$prefix/bin/wrenchcone-verify
+[ -x "$v" ] || { echo "FAIL: no bin/wrenchcone-verify installed" >&2; exit 1; }
+out=$("$v" "$top_srcdir/tests/certs/figure5-ln.json") \
+    && [ "$out" = "certificate holds: mode ln is infeasible" ] \
+    || { echo "FAIL: installed wrenchcone-verify: $out" >&2; exit 1; }
 
 so=$(ls "$prefix"/lib/libwrenchcone.so 2> /dev/null)
 [ -n "$so" ] || { echo "FAIL: no libwrenchcone.so installed" >&2; exit 1; }

@@ -39,6 +39,7 @@ SH_TESTS = \
 	tests/cli-cone.sh \
 	tests/cli-errors.sh \
 	tests/cli-verify.sh \
+	tests/verify-standalone.sh \
 	tests/cli-double.sh \
 	tests/cli-compare.sh \
 	tests/cli-stability.sh \

@@ -1,8 +1,13 @@
 # lib/check -- the certificate checker: GMP arithmetic alone, sharing no
-# algorithm with the solver.
+# algorithm with the solver.  Its own convenience library, with the lib/core
+# files it uses (lib/core/local.mk), compiled without -DGMPRATIONAL and
+# linked with GMP alone; lib/libwc.la includes it (Makefile.am).
 
-lib_libwc_la_SOURCES += \
+lib_libwccheck_la_CPPFLAGS = -I$(top_srcdir)/lib
+lib_libwccheck_la_LIBADD = $(GMP_LIBS)
+lib_libwccheck_la_SOURCES += \
 	lib/check/verify.c \
+	lib/check/report.c \
 	lib/check/gmpvec.c \
 	lib/check/textbuf.c \
 	lib/check/motzkin.c \

@@ -113,6 +113,7 @@
 #define WC_VERIFY_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "core/error.h"
 
@@ -152,6 +153,20 @@ int wc_verify_certificate(int * holds, char ** reason, char ** mode,
 int wc_verify(int * holds, char ** reason, char ** summary,
               const char * text, size_t len, const char * file,
               wc_error_t err);
+
+/* Check a certificate of either kind (text, len and file as above) and
+   write the verdict to out in one line: "certificate holds: SUMMARY" or
+   "certificate does not hold: REASON" (wc_verify's summary and reason),
+   or with json nonzero the JSON object {"holds": true|false, then for a
+   mode-feasibility certificate "mode" and "feasible" (its claim), for
+   any other kind "summary"; then "reason" when it does not hold}.  Sets
+   *holds.  Returns WC_OK once the line is written (a failed write is left
+   to the caller to find, with fflush or ferror on out), or else what
+   wc_verify returns, err set and nothing written.  What `wrenchcone
+   verify` and wrenchcone-verify print (wrenchcone-verify(1)).  */
+int wc_verify_fprint(FILE * out, int * holds, const char * text,
+                     size_t len, const char * file, int json,
+                     wc_error_t err);
 
 #ifdef __cplusplus
 }

@@ -1,9 +1,15 @@
 # lib/core -- errors, the problem and its reader, numbers, JSON reading,
 # reproducible random problems, versions, the progress hook.
 
-lib_libwc_la_SOURCES += \
+# error.c, text.c, json.c and jsontree.c are the certificate checker's
+# too: they go into lib/libwccheck.la (lib/check/local.mk), which
+# lib/libwc.la includes.
+lib_libwccheck_la_SOURCES += \
 	lib/core/error.c \
 	lib/core/text.c \
+	lib/core/json.c \
+	lib/core/jsontree.c
+lib_libwc_la_SOURCES += \
 	lib/core/problem.c \
 	lib/core/number.c \
 	lib/core/polygon.c \
@@ -14,8 +20,6 @@ lib_libwc_la_SOURCES += \
 	lib/core/randshape.c \
 	lib/core/randdegen.c \
 	lib/core/random.c \
-	lib/core/json.c \
-	lib/core/jsontree.c \
 	lib/core/version.c \
 	lib/core/progress.c
 wccoredir = $(pkgincludedir)/core
