@@ -17,6 +17,7 @@
 #include <stdio.h>
 
 #include "wrenchcone.h"
+#include "cli-base.h"
 
 #define PROG "wrenchcone"
 
@@ -72,8 +73,6 @@ int cli_usage_error(const char * cmd, const char * fmt, const char * arg);
 /* The name under which path is reported: "-" is "<stdin>".  */
 const char * cli_input_name(const char * path);
 
-int cli_read_all(char ** text, size_t * len, const char * path, size_t max,
-                 wc_error_t err);
 int cli_load_problem(wc_problem_t P, const char * path, wc_error_t err);
 
 /* --format's value: 1 when s names a format (cdd, ine and ext only with
@@ -86,8 +85,6 @@ int cli_parse_format(cli_format * f, const char * s, const char * cmd,
 int cli_parse_numbers(fmpq * v, char ** args, slong k, const char * what,
                       wc_error_t err);
 
-/* Flush stdout; a failed write is reported, and is an I/O failure.  */
-int cli_finish_output(void);
 
 /* Progress on stderr (cli-progress.c): cli_progress_force for
    --progress, cli_progress_start before a command runs (it installs the

@@ -5,8 +5,8 @@
 
 bin_PROGRAMS = src/wrenchcone
 src_wrenchcone_SOURCES = src/wrenchcone.c src/commands.h \
-	src/cli.c src/cli-options.c src/cli-memory.c \
-	src/cli-progress.c src/cli.h \
+	src/cli.c src/cli-base.c src/cli-options.c src/cli-memory.c \
+	src/cli-progress.c src/cli.h src/cli-base.h \
 	src/cmd-cone.c src/cmd-modes.c src/cmd-feasible.c src/cmd-verify.c \
 	src/cmd-random.c src/cmd-compare.c src/cmd-classify.c \
 	src/cmd-stability.c src/cmd-plan.c src/cmd-sweep.c
@@ -16,6 +16,7 @@ src_wrenchcone_LDADD = lib/libwc.la
 # else (no -DGMPRATIONAL, no FLINT, no cddlib), so that a FLINT or cddlib
 # call in the checker cannot link (tests/verify-standalone.sh).
 bin_PROGRAMS += src/wrenchcone-verify
-src_wrenchcone_verify_SOURCES = src/wrenchcone-verify.c
+src_wrenchcone_verify_SOURCES = src/wrenchcone-verify.c src/cli-base.c \
+	src/cli-base.h
 src_wrenchcone_verify_CPPFLAGS = -I$(top_srcdir)/lib
 src_wrenchcone_verify_LDADD = lib/libwccheck.la $(GMP_LIBS)

@@ -7,38 +7,14 @@
 
    Both programs call this one function, so that they cannot drift apart.
    It writes to the stream its caller gives, nothing else; like the rest
-   of lib/check it uses C and lib/core alone (it has its own JSON string
-   writer rather than lib/io's, and writes the same bytes).  */
+   of lib/check it uses C and lib/core alone (the JSON string writer is
+   lib/core's, the one the solver's outputs use too).  */
 
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "core/text.h"
 #include "check/verify.h"
-
-/* s as a JSON string: " and \ escaped, newline and tab as \n and \t,
-   other control characters as \u00XX; other bytes as they are (UTF-8
-   passes through).  */
-static void
-put_json_string(FILE * out, const char * s)
-{
-    putc('"', out);
-    for (; *s != '\0'; s++)
-    {
-        unsigned char c = (unsigned char) *s;
-
-        if (c == '"' || c == '\\')
-            fprintf(out, "\\%c", c);
-        else if (c == '\n')
-            fputs("\\n", out);
-        else if (c == '\t')
-            fputs("\\t", out);
-        else if (c < 0x20)
-            fprintf(out, "\\u%04x", c);
-        else
-            putc(c, out);
-    }
-    putc('"', out);
-}
 
 /* The JSON verdict.  A mode-feasibility certificate gives its mode and
    claim as keys; any other kind a summary.  */
@@ -60,18 +36,18 @@ put_json(FILE * out, int holds, const char * reason, const char * summary,
     if (mode != NULL)
     {
         fputs(", \"mode\": ", out);
-        put_json_string(out, mode);
+        _wc_fput_json_string(out, mode);
         fprintf(out, ", \"feasible\": %s", feasible ? "true" : "false");
     }
     else
     {
         fputs(", \"summary\": ", out);
-        put_json_string(out, summary != NULL ? summary : "");
+        _wc_fput_json_string(out, summary != NULL ? summary : "");
     }
     if (!holds)
     {
         fputs(", \"reason\": ", out);
-        put_json_string(out, reason != NULL ? reason : "");
+        _wc_fput_json_string(out, reason != NULL ? reason : "");
     }
     fputs("}\n", out);
     free(mode);

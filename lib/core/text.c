@@ -81,3 +81,27 @@ _wc_error_token(wc_error_t err, int status, const char * file, long line,
     free(t);
     return status;
 }
+
+/* Only the escapes JSON requires, and \n and \t by name: the output is
+   ASCII-transparent, so UTF-8 passes through unchanged.  */
+void
+_wc_fput_json_string(FILE * out, const char * s)
+{
+    putc('"', out);
+    for (; *s != '\0'; s++)
+    {
+        unsigned char c = (unsigned char) *s;
+
+        if (c == '"' || c == '\\')
+            fprintf(out, "\\%c", c);
+        else if (c == '\n')
+            fputs("\\n", out);
+        else if (c == '\t')
+            fputs("\\t", out);
+        else if (c < 0x20)
+            fprintf(out, "\\u%04x", c);
+        else
+            putc(c, out);
+    }
+    putc('"', out);
+}

@@ -11,6 +11,7 @@
 #define WC_TEXT_H
 
 #include <stddef.h>
+#include <stdio.h>
 
 #include "core/error.h"
 
@@ -23,6 +24,12 @@ extern "C" {
 
 /* A malloc'd copy of s; NULL when out of memory.  */
 char * _wc_strdup(const char * s);
+
+/* Write s to out as a JSON string: only the escapes JSON requires, and
+   \n and \t by name; other bytes as they are, so UTF-8 passes through.
+   The one writer of strings for every JSON output, the solver's and the
+   checker's.  */
+void _wc_fput_json_string(FILE * out, const char * s);
 
 /* A printable copy of s[0..len) for a message: control bytes (and DEL)
    as \xNN, cut after WC_SHOW_MAX bytes with "...".  With whole_chars the

@@ -6,6 +6,7 @@
 
 #include <config.h>
 
+#include "core/text.h"
 #include "io/print.h"
 #include "io/printutil.h"
 
@@ -81,26 +82,8 @@ _wc_fprint_zvec(FILE * out, const fmpz * v, slong len, int json)
     putc(json ? ']' : ')', out);
 }
 
-/* Only the escapes JSON requires, and \n and \t by name: the output is
-   ASCII-transparent, so UTF-8 passes through unchanged.  */
 void
 wc_fprint_json_string(FILE * out, const char * s)
 {
-    putc('"', out);
-    for (; *s != '\0'; s++)
-    {
-        unsigned char c = (unsigned char) *s;
-
-        if (c == '"' || c == '\\')
-            fprintf(out, "\\%c", c);
-        else if (c == '\n')
-            fputs("\\n", out);
-        else if (c == '\t')
-            fputs("\\t", out);
-        else if (c < 0x20)
-            fprintf(out, "\\u%04x", c);
-        else
-            putc(c, out);
-    }
-    putc('"', out);
+    _wc_fput_json_string(out, s);
 }
