@@ -19,6 +19,7 @@
 # page cannot drift from the program.  Only the roff escapes \- \& \e and
 # \(aq may appear in those blocks; anything else is an error here rather
 # than a silent mismatch.  man/wrenchcone.1 must hold at least 4 commands.
+# The pages run: wrenchcone.1, wrenchcone.5 and wrenchcone-certificate.5.
 #
 # tests/man-lint.sh checks that the pages are "mandoc -Tlint" clean.
 #
@@ -36,6 +37,7 @@ fi
 
 page1=$top_srcdir/man/wrenchcone.1
 page5=$top_srcdir/man/wrenchcone.5
+page5c=$top_srcdir/man/wrenchcone-certificate.5
 min_examples=4
 
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/man-examples.XXXXXX") || exit 99
@@ -153,7 +155,7 @@ run_examples() {
     done
 }
 
-for page in "$page1" "$page5"; do
+for page in "$page1" "$page5" "$page5c"; do
     if [ ! -f "$page" ]; then
         failed "missing manual page $page"
     fi
@@ -168,11 +170,15 @@ if [ -f "$page1" ]; then
     fi
     run_examples "$tmp/ex1" "${n1:-0}"
 fi
-if [ -f "$page5" ]; then
-    if n5=$(extract "$page5" "$tmp/ex5"); then :; else
-        failed "malformed EXAMPLES in $page5"
+j=5
+for page in "$page5" "$page5c"; do
+    if [ -f "$page" ]; then
+        if n5=$(extract "$page" "$tmp/ex$j"); then :; else
+            failed "malformed EXAMPLES in $page"
+        fi
+        run_examples "$tmp/ex$j" "${n5:-0}"
     fi
-    run_examples "$tmp/ex5" "${n5:-0}"
-fi
+    j=$((j + 1))
+done
 
 exit "$fail"

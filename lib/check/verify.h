@@ -11,103 +11,14 @@
    certificate's claim rests on from the problem with GMP rationals, and
    checks the witnesses and Motzkin multipliers with exact arithmetic.
 
-   A certificate is one JSON object; keys not named here are ignored.
-   Numbers are exact rationals: JSON strings "p" or "p/q" (p, q decimal,
-   q > 0; not necessarily in lowest terms) or JSON integers.  Its "kind"
-   says which of the two formats below it has (no "kind": the first).
-   For both, with r = point - com and t = (-n_y, n_x) at each fixel
-   (a x b = a_x b_y - a_y b_x):
-     J_n = (n_x, n_y, r x n),  J_t = (t_x, t_y, r x t).
-
-   1. "kind": "mode-feasibility" (paper Table 1, wrenchcone(1), MODES)
-     "mode": "ln"                        Table 1 letters, one per fixel
-     "feasible": true | false
-     "witness": [vx, vy, w]              when feasible
-     "constraints": [{"row": [a, b, c], "relation": ">" | ">=" | "="}, ...]
-     "multipliers": [y1, ..., ym]        when not feasible
-     "problem": {"com": [x, y], "fixels": [{"point": [x, y],
-                 "normal": [x, y], "state": "touching" | "near"}, ...]}
-   It holds when
-     - "constraints" is exactly the list the mode implies: for each fixel
-       in order, its normal row, then its tangential row when the letter
-       constrains it (touching s: J_n >; l: J_n =, J_t >; r: J_n =,
-       -J_t >; n: J_n =, J_t =; near a: -J_n >; near s: J_n >=), each row
-       the primitive integer vector on its ray;
-     - feasible: the witness satisfies every row's relation;
-     - not feasible: one multiplier per constraint, sum y_k row_k = 0,
-       y_k >= 0 on > and >= rows, y_k > 0 on at least one > row (then, by
-       Motzkin's transposition theorem, no twist satisfies the rows).
-
-   2. "kind": "strong-stability" (wrenchcone(1), stability; exact semantics)
-     "problem": {"mass": m, "inertia": I, "com": [x, y],
-                 "fixels": [{"point": [x, y], "normal": [x, y],
-                             "state": "touching" | "near",
-                             "mu_s": ms, "mu_k": mk}, ...]}
-     "wrench": [gx, gy, gtau]
-     "weakly_stable": true | false
-     "weak": {"c": [c_1n, .., c_nn, c_1t, .., c_nt]}   when weakly stable
-             {"separator": [y1, y2, y3]}               when not
-     "strongly_stable": true | false
-     "motion": {"sign": "ls", "nudot": [a, b, c], "c": [2 n forces]}
-                                  when weakly but not strongly stable
-     "faces": [{"sign": "ss", "multipliers": [...]},
-               {"sign": "nn", "rotation": 1 | -1, "multipliers": [...]},
-               ...]               when strongly stable
-   m > 0, I > 0, normals nonzero, mu_s, mu_k >= 0 (else malformed);
-   M = diag(m, m, I).  A sign string has one letter per fixel, in file
-   order: s, l, r or n on a touching fixel, u on a near one; "rotation"
-   (a rational equal to 1 or -1) only with the sign n..n (n on every
-   touching fixel); a sign or rotation breaking these rules is malformed.
-   For an acceleration nudot, a_in = J_in . nudot and a_it = J_it . nudot;
-   its sign string S(nudot) has at touching fixel i s when a_in > 0, else
-   l, r or n as a_it is > 0, < 0 or = 0 (and u at near fixels).
-   It holds when
-     - weakly stable: c is 0 at near fixels; at touching ones c_in >= 0,
-       |c_it| <= mu_s c_in; and g = -J c, g = -sum_i (c_in J_in +
-       c_it J_it).
-     - not weakly stable: y . g > 0 and y . (J_in - mu_s J_it) >= 0,
-       y . (J_in + mu_s J_it) >= 0 at every touching fixel (then
-       y . (-J c) <= 0 < y . g for every admissible c).
-     - strongly stable is claimed only with weakly stable.
-     - weakly but not strongly stable: the motion is a moving solution:
-       nudot != 0, M nudot = J c + g, c = 0 at near fixels, and at each
-       touching fixel the letter of the sign holds:
-         s: a_in > 0, c_in = c_it = 0;
-         l: a_in = 0, a_it > 0, c_in >= 0, c_it = -mu_k c_in;
-         r: a_in = 0, a_it < 0, c_in >= 0, c_it = +mu_k c_in;
-         n: a_in = 0, a_it = 0, c_in >= 0, |c_it| <= mu_s c_in.
-     - strongly stable: "faces" is complete, each face once: its signs
-       without "rotation" are exactly the strings S(nudot) over the
-       nudot with a_in >= 0 at every touching fixel, other than n..n
-       (computed here from the arrangement of the planes J_in . x = 0,
-       J_it . x = 0 of the touching fixels, in polynomial time); and when
-       every touching fixel has the same point (and one fixel touches),
-       two more entries n..n with "rotation" 1 and -1, else none.  No
-       touching fixel: no face at all.  And every face has no solution,
-       by Motzkin multipliers for this system in the unknowns
-       z = (nudot_1, nudot_2, nudot_3, lambda_1, .., lambda_e, tau).
-       Its friction edges e_1 .. e_e are, for the touching fixels in
-       order, by letter: n: (1, -mu_s) then (1, +mu_s); l: (1, -mu_k);
-       r: (1, +mu_k); s: none; the edge (en, et) at fixel i is the
-       wrench w = en J_in + et J_it.  Its rows, in this order:
-         3 rows =: row k is (M_k1, M_k2, M_k3, -w_1[k], .., -w_e[k],
-           -g[k]), that is M nudot - sum_j lambda_j w_j - tau g = 0;
-         for each touching fixel in order, rows on nudot (0 elsewhere):
-           s: J_in > ; l: J_in =, J_it > ; r: J_in =, -J_it > ;
-           n: J_in =, J_it =;
-         instead for a rotation face: J_in =, J_it = at every touching
-           fixel, then rho v > with v = J_1n x J_1t (the 3-D cross
-           product of the first touching fixel's columns) and rho the
-           rotation; v = |n_1|^2 (r_1y, -r_1x, 1) is the rotation about
-           the shared point, so rho = 1 turns the body counter-clockwise;
-         lambda_j >= 0 for j = 1 .. e (unit rows); tau > 0 (unit row).
-       Rows are exact, never rescaled.  There is one multiplier per row;
-       sum_k y_k row_k = 0, y_k >= 0 on > and >= rows, y_k > 0 on at
-       least one > row.  Then no (nudot, lambda, tau) with tau > 0 solves
-       the system, and dividing by tau, no motion of the face exists
-       for g.
-   A wrench with no touching fixel is weakly stable only when g = 0,
-   and then strongly stable (M nudot = 0).  */
+   The two formats (kind "mode-feasibility", written by `wrenchcone
+   feasible --certificate`, and kind "strong-stability", written by
+   `wrenchcone classify --certificate`), every condition checked, what is
+   computed again from the problem rather than trusted (the rows of a
+   mode, the Jacobian, the set of moving faces), the verdict lines and
+   the exit statuses are described in man/wrenchcone-certificate.5, the
+   manual page wrenchcone-certificate(5).  Change that page with the
+   code.  */
 
 #ifndef WC_VERIFY_H
 #define WC_VERIFY_H
