@@ -82,6 +82,12 @@ cli_install_gmp_memory(void)
     mp_set_memory_functions(cli_xmalloc, gmp_resize, gmp_release);
 }
 
+const char *
+cli_input_name(const char * path)
+{
+    return strcmp(path, "-") == 0 ? "<stdin>" : path;
+}
+
 /* Read the whole of f into a malloc'd buffer, at most max bytes.  */
 static int
 read_stream(char ** text, size_t * len, FILE * f, const char * path,
@@ -140,7 +146,7 @@ cli_read_all(char ** text, size_t * len, const char * path, size_t max,
     if (f == NULL)
         return wc_error_set(err, WC_EINPUT, path, 0, 0, "cannot open: %s",
                             strerror(errno));
-    status = read_stream(text, len, f, path, max, err);
+    status = read_stream(text, len, f, cli_input_name(path), max, err);
     if (f != stdin)
         fclose(f);
     return status;

@@ -16,6 +16,9 @@
 /* The prefix of every diagnostic of both programs.  */
 #define CLI_WHO "wrenchcone: "
 
+/* The name under which path is reported: "-" is "<stdin>".  */
+const char * cli_input_name(const char * path);
+
 /* The whole of path ("-": stdin) into a malloc'd *text of *len bytes, at
    most max; a file that cannot be opened, a directory or a file too large
    is WC_EINPUT, any other read failure WC_EINTERNAL, located at path.  */

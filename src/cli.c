@@ -48,12 +48,6 @@ cli_usage_error(const char * cmd, const char * fmt, const char * arg)
     return WC_EUSAGE;
 }
 
-const char *
-cli_input_name(const char * path)
-{
-    return strcmp(path, "-") == 0 ? "<stdin>" : path;
-}
-
 int
 cli_load_problem(wc_problem_t P, const char * path, wc_error_t err)
 {

@@ -70,9 +70,6 @@ int cli_report(const wc_error_t err, int status);
    when cmd is not NULL); returns WC_EUSAGE.  */
 int cli_usage_error(const char * cmd, const char * fmt, const char * arg);
 
-/* The name under which path is reported: "-" is "<stdin>".  */
-const char * cli_input_name(const char * path);
-
 int cli_load_problem(wc_problem_t P, const char * path, wc_error_t err);
 
 /* --format's value: 1 when s names a format (cdd, ine and ext only with

@@ -127,8 +127,7 @@ main(int argc, char ** argv)
     status = cli_read_all(&text, &len, path, MAX_CERTIFICATE_BYTES, err);
     if (status == WC_OK)
         status = wc_verify_fprint(stdout, &holds, text, len,
-                                  strcmp(path, "-") == 0 ? "<stdin>" : path,
-                                  json, err);
+                                  cli_input_name(path), json, err);
     if (status != WC_OK)
     {
         msg = wc_error_format(err);

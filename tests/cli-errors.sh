@@ -222,6 +222,15 @@ if [ -r /proc/self/mem ]; then
     expect_status read-eio 3
     expect_stderr read-eio "wrenchcone: /proc/self/mem: read error: Input/output error"
 fi
+# An input over the size limit, named <stdin> when it is standard input.
+head -c 67108865 /dev/zero >"$tmp/huge"
+run "$tmp/huge" verify -
+expect_status too-large-stdin 1
+expect_stderr too-large-stdin "wrenchcone: <stdin>: file too large (over 67108864 bytes)"
+run /dev/null verify "$tmp/huge"
+expect_status too-large-file 1
+expect_stderr too-large-file "wrenchcone: $tmp/huge: file too large (over 67108864 bytes)"
+rm -f "$tmp/huge"
 run /dev/null cone "$tmp" u
 expect_status read-directory 1
 expect_stderr read-directory "wrenchcone: $tmp: read error: Is a directory"

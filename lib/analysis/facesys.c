@@ -21,7 +21,7 @@
    (nudot, c = sum lambda_j (e_n, e_t) at the edges' fixels).  Without one,
    Motzkin's transposition theorem gives multipliers, the certificate
    verify.c checks: the rows here are exactly the rows documented in
-   verify.h, in the same order.  */
+   wrenchcone-certificate(5), in the same order.  */
 
 #include <config.h>
 

@@ -18,7 +18,8 @@
    (a_in < 0)), x the force letters (touching s l r n; near ones carry
    none), rot != 0 the rotation face (y is then ignored on touching
    fixels).  Returns 1 with a motion, nudot (3) and forces c (2n); 0
-   without, with the Motzkin multipliers of the face's rows (verify.h) in
+   without, with the Motzkin multipliers of the face's rows
+   (wrenchcone-certificate(5)) in
    *mult (malloc'd, *nmult entries) when mult is not NULL; -1 on failure
    (err set).  */
 int _wc_face_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,

@@ -54,7 +54,8 @@ typedef struct
 wc_motion_struct;
 
 /* A moving face without a solution for the wrench, with the Motzkin
-   multipliers proving it (see verify.h for the rows), filled only when
+   multipliers proving it (wrenchcone-certificate(5) gives the rows),
+   filled only when
    certificates are asked for.  */
 typedef struct
 {
@@ -119,7 +120,8 @@ int wc_classify(wc_classify_t R, const wc_problem_t P, const fmpq * g,
                 int certificates, slong max_modes, wc_error_t err);
 
 /* Write the classification as a "strong-stability" certificate (see
-   verify.h); R must have been computed with certificates.  Returns WC_OK
+   wrenchcone-certificate(5)); R must have been computed with
+   certificates.  Returns WC_OK
    or WC_EINTERNAL on a write error.  */
 int wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
                                    const wc_classify_t R);

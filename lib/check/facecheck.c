@@ -1,6 +1,7 @@
 /* facecheck.c -- the faces claim of a strong-stability certificate: the
    faces listed are exactly the moving faces, and each has Motzkin
-   multipliers showing it has no motion (the system of verify.h).
+   multipliers showing it has no motion (the system of
+   wrenchcone-certificate(5)).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -196,7 +197,7 @@ face_rows(face_system * Y, wc_check_scratch * X, const wc_check_face * F,
 }
 
 /* The Motzkin multipliers of face F (number k, 0-based) for the system of
-   verify.h.  1 or 0; -1 when out of memory.  */
+   wrenchcone-certificate(5).  1 or 0; -1 when out of memory.  */
 static int
 check_face(wc_check_scratch * X, size_t k, const wc_check_face * F)
 {

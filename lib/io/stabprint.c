@@ -341,7 +341,7 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
     return _wc_fprint_done(out);
 }
 
-/* The certificate (verify.h, kind "strong-stability").  */
+/* The certificate (wrenchcone-certificate(5), kind "strong-stability").  */
 int
 wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
                                const wc_classify_t R)
