@@ -50,8 +50,9 @@ report(void * ctx, const char * stage, slong done, slong total)
     (void) ctx;
     if (!progress.forced && t - progress.start < 1000)
         return;
-    if (!(progress.forced && (first || last)) && !(progress.tty && last)
-        && !first && t - progress.last < 250)
+    /* The hook is installed only when forced or on a terminal, and both
+       show the first and the last report of a stage.  */
+    if (!first && !last && t - progress.last < 250)
         return;
     progress.last = t;
     progress.stage = stage;

@@ -135,36 +135,36 @@ cleanup:
     return status;
 }
 
+/* The sign of x - 2^e.  */
+static int
+cmp_pow2(const fmpq_t x, slong e)
+{
+    fmpq_t b;
+    int c;
+
+    fmpq_init(b);
+    fmpq_one(b);
+    if (e >= 0)
+        fmpq_mul_2exp(b, b, e);
+    else
+        fmpq_div_2exp(b, b, -e);
+    c = fmpq_cmp(x, b);
+    fmpq_clear(b);
+    return c;
+}
+
 int
 wc_critical_width_ok(const fmpq_t width)
 {
-    fmpq_t b;
-    int ok;
-
-    if (fmpq_sgn(width) <= 0)
-        return 0;
-    fmpq_init(b);
-    fmpq_one(b);
-    fmpq_div_2exp(b, b, WC_CRITICAL_MIN_WIDTH_EXP);
-    ok = fmpq_cmp(width, b) >= 0;
-    fmpq_clear(b);
-    return ok;
+    return fmpq_sgn(width) > 0
+           && cmp_pow2(width, -WC_CRITICAL_MIN_WIDTH_EXP) >= 0;
 }
 
 int
 wc_critical_max_ok(const fmpq_t max)
 {
-    fmpq_t b;
-    int ok;
-
-    if (fmpq_sgn(max) <= 0)
-        return 0;
-    fmpq_init(b);
-    fmpq_one(b);
-    fmpq_mul_2exp(b, b, WC_CRITICAL_MAX_FRICTION_EXP);
-    ok = fmpq_cmp(max, b) <= 0;
-    fmpq_clear(b);
-    return ok;
+    return fmpq_sgn(max) > 0
+           && cmp_pow2(max, WC_CRITICAL_MAX_FRICTION_EXP) <= 0;
 }
 
 int
