@@ -121,10 +121,14 @@ cli_write_certificate(const char * path, int (*put)(FILE *, const void *),
 
     if (f != NULL)
     {
-        bad = put(f, data) != WC_OK;
-        bad |= fclose(f) != 0;
+        int st = put(f, data), wbad = ferror(f);
+
+        wbad |= fclose(f) != 0;
+        bad = st != WC_OK || wbad;
         if (bad && !existed)
             remove(path);
+        if (st != WC_OK && !wbad)
+            return st;          /* not a write error: the caller says why */
     }
     if (bad)
     {

@@ -98,7 +98,9 @@ void cli_progress_clear(void);
 void cli_install_memory_handlers(void);
 
 /* Write a certificate file with put(f, data); never leaves a partial file
-   this run created.  */
+   this run created.  A write error is reported here (exit status
+   WC_EINTERNAL); any other failure of put is returned for the caller to
+   report.  */
 int cli_write_certificate(const char * path,
                           int (*put)(FILE *, const void *),
                           const void * data);

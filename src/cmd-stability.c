@@ -27,17 +27,21 @@ const char cmd_stability_usage[] =
     "                   ||(fx, fy, tau)|| = max(|fx|, |fy|, |tau| / L)\n"
     "                   (also accepted: --bias FX FY TAU)\n"
     "  --length=L       the length L > 0 of that norm (default 1)\n"
+    "  --certificate=FILE  also write a certificate (JSON) that the strongly\n"
+    "                   stable set is exact, for wrenchcone verify\n"
     "  --format=FMT     text (default) or json\n"
     "  -h, --help       print this help and exit\n"
     "  -V, --version    print versions and exit\n";
 
 /* --bias alone takes a wrench.  */
-enum { OPT_FORMAT = 256, OPT_LENGTH, OPT_BIAS = CLI_WRENCH_VALUE | 1 };
+enum { OPT_FORMAT = 256, OPT_LENGTH, OPT_CERT,
+       OPT_BIAS = CLI_WRENCH_VALUE | 1 };
 
 const struct option cmd_stability_options[] = {
     { "format", required_argument, NULL, OPT_FORMAT },
     { "bias", required_argument, NULL, OPT_BIAS },
     { "length", required_argument, NULL, OPT_LENGTH },
+    { "certificate", required_argument, NULL, OPT_CERT },
     { NULL, 0, NULL, 0 }
 };
 
@@ -186,9 +190,25 @@ split_bias(char * bias[3], char ** copy, const char * value)
 
 /* The whole answer: the problem, --bias and --length read, the sets and
    the robustness computed.  */
+typedef struct
+{
+    const wc_problem_struct * P;
+    const wc_stability_struct * S;
+    wc_error_struct * err;
+}
+cert_job;
+
+static int
+put_certificate(FILE * f, const void * p)
+{
+    const cert_job * j = p;
+
+    return wc_stability_certificate_fprint(f, j->P, j->S, j->err);
+}
+
 static int
 compute(answer * a, const char * path, char ** bias, const char * length,
-        wc_error_t err)
+        const char * certificate, wc_error_t err)
 {
     wc_problem_t P;
     int status;
@@ -209,6 +229,14 @@ compute(answer * a, const char * path, char ** bias, const char * length,
         status = wc_stability(a->S, P, err);
     if (status == WC_OK && a->biased)
         status = robustness(a, err);
+    if (status == WC_OK && certificate != NULL)
+    {
+        cert_job j = { P, a->S, err };
+
+        status = cli_write_certificate(certificate, put_certificate, &j);
+        if (status != WC_OK && err->message == NULL)
+            status = -status;       /* reported already */
+    }
     wc_problem_clear(P);
     return status;
 }
@@ -216,7 +244,8 @@ compute(answer * a, const char * path, char ** bias, const char * length,
 /* -1 to go on, or the exit status.  */
 static int
 parse(cli_format * fmt, const char ** bias, const char ** length,
-      const cli_command * self, int argc, char ** argv)
+      const char ** certificate, const cli_command * self, int argc,
+      char ** argv)
 {
     cli_options p;
     int c;
@@ -227,6 +256,8 @@ parse(cli_format * fmt, const char ** bias, const char ** length,
             *bias = optarg;
         else if (c == OPT_LENGTH)
             *length = optarg;
+        else if (c == OPT_CERT)
+            *certificate = optarg;
         else if (!cli_parse_format(fmt, optarg, "stability", 0))
             return WC_EUSAGE;
     return c == CLI_EXIT ? p.status : -1;
@@ -236,13 +267,14 @@ int
 cmd_stability(const cli_command * self, int argc, char ** argv)
 {
     cli_format fmt = FMT_TEXT;
-    const char * bias = NULL, * length = NULL;
+    const char * bias = NULL, * length = NULL, * certificate = NULL;
     char * values[3] = { NULL, NULL, NULL }, * copy = NULL;
     int status, split = 1;
     wc_error_t err;
     answer a;
 
-    if ((status = parse(&fmt, &bias, &length, self, argc, argv)) >= 0)
+    if ((status = parse(&fmt, &bias, &length, &certificate, self, argc,
+                        argv)) >= 0)
         return status;
     if (argc - optind != 1)
         return cli_usage_error("stability", argc - optind < 1
@@ -262,8 +294,10 @@ cmd_stability(const cli_command * self, int argc, char ** argv)
     wc_error_init(err);
     answer_init(&a);
     a.biased = bias != NULL;
-    status = compute(&a, argv[optind], values, length, err);
-    if (status != WC_OK)
+    status = compute(&a, argv[optind], values, length, certificate, err);
+    if (status < 0)
+        status = -status;
+    else if (status != WC_OK)
         cli_report(err, status);
     else
     {

@@ -23,28 +23,6 @@
 #include "analysis/facesys.h"
 #include "analysis/stability.h"
 
-static void
-motion_init(wc_motion_struct * a, slong n)
-{
-    slong k;
-
-    a->sign = NULL;
-    for (k = 0; k < 3; k++)
-        fmpq_init(a->nudot + k);
-    a->c = _fmpq_vec_init(2 * n + 1);
-}
-
-static void
-motion_clear(wc_motion_struct * a, slong n)
-{
-    slong k;
-
-    free(a->sign);
-    for (k = 0; k < 3; k++)
-        fmpq_clear(a->nudot + k);
-    _fmpq_vec_clear(a->c, 2 * n + 1);
-}
-
 void
 wc_classify_init(wc_classify_t R)
 {
@@ -57,7 +35,7 @@ wc_classify_init(wc_classify_t R)
         fmpq_init(R->weak_sep + k);
     }
     R->weak_c = _fmpq_vec_init(1);
-    motion_init(&R->paper, 0);
+    _wc_motion_init(&R->paper, 0);
 }
 
 void
@@ -75,9 +53,9 @@ wc_classify_clear(wc_classify_t R)
     free(R->modes);
     _fmpq_vec_clear(R->weak_c, 2 * R->n + 1);
     for (i = 0; i < R->nmotions; i++)
-        motion_clear(R->motions + i, R->n);
+        _wc_motion_clear(R->motions + i, R->n);
     flint_free(R->motions);
-    motion_clear(&R->paper, R->n);
+    _wc_motion_clear(&R->paper, R->n);
     for (i = 0; i < R->nnofaces; i++)
     {
         free(R->nofaces[i].sign);
@@ -104,7 +82,7 @@ add_motion(wc_classify_t R, const char * sign)
     R->motions = flint_realloc(R->motions,
                                sizeof(wc_motion_struct) * (R->nmotions + 1));
     a = R->motions + R->nmotions++;
-    motion_init(a, R->n);
+    _wc_motion_init(a, R->n);
     a->sign = copy_string(sign);
     return a;
 }
@@ -127,68 +105,12 @@ add_noface(wc_classify_t R, const char * sign, int rot, fmpq * mult,
 /* ---------------------------------------------------------------------
    Weak stability: a static solution (R->weak_c) or a separator.  */
 
-/* R->weak_c := the forces of lambda over the edges w of the touching
-   fixels, two per fixel (the mu_s edges).  */
-static void
-static_forces(wc_classify_t R, const _wc_stab_model * m,
-              const fmpq * lambda)
-{
-    slong n = m->n, j;
-    fmpq ed[4];
-
-    for (j = 0; j < 4; j++)
-        fmpq_init(ed + j);
-    _wc_qvec_zero(R->weak_c, 2 * n);
-    for (j = 0; j < 2 * m->t; j++)
-    {
-        slong f = m->tidx[j / 2];
-
-        wc_friction_edges(ed, m->P->fixels + f, 'n');
-        fmpq_addmul(R->weak_c + f, lambda + j, ed + 2 * (j % 2));
-        fmpq_addmul(R->weak_c + n + f, lambda + j, ed + 2 * (j % 2) + 1);
-    }
-    for (j = 0; j < 4; j++)
-        fmpq_clear(ed + j);
-}
-
 static int
 classify_weak(wc_classify_t R, const _wc_stab_model * m, wc_error_t err)
 {
-    const wc_problem_struct * P = m->P;
-    slong t = m->t, i, j, ne = 2 * t;
-    fmpq * z, * w, ed[4];
-    int r;
+    int r = _wc_stab_weak(R->weak_c, R->weak_sep, m, R->g, err);
 
-    if (t == 0)
-    {
-        R->weak = _wc_qvec_is_zero(R->g, 3);
-        _wc_qvec_set(R->weak_sep, R->g, 3);
-        return WC_OK;
-    }
-    for (j = 0; j < 4; j++)
-        fmpq_init(ed + j);
-    w = _fmpq_vec_init(3 * ne);
-    for (i = 0; i < t; i++)
-    {
-        wc_friction_edges(ed, P->fixels + m->tidx[i], 'n');
-        _wc_stab_edge_wrench(w + 3 * (2 * i), m, m->tidx[i], ed);
-        _wc_stab_edge_wrench(w + 3 * (2 * i + 1), m, m->tidx[i], ed + 2);
-    }
-
-    /* The static solution: g = sum lambda_j (-w_j), or a separator.  */
-    for (j = 0; j < 3 * ne; j++)
-        fmpq_neg(w + j, w + j);
-    z = _fmpq_vec_init(ne + 1);
-    r = _wc_lp_cone3(z, R->weak_sep, w, ne, R->g, err);
-    if (r < 0)
-        wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "internal error: "
-                     "the static solution fails its check");
-    else if ((R->weak = r) == 1)
-        static_forces(R, m, z);
-    _fmpq_vec_clear(z, ne + 1);
-    _fmpq_vec_clear(w, 3 * ne);
-    for (j = 0; j < 4; j++)
-        fmpq_clear(ed + j);
+    R->weak = r == 1;
     return r < 0 ? WC_EINTERNAL : WC_OK;
 }
 
@@ -629,8 +551,8 @@ wc_classify(wc_classify_t R, const wc_problem_t P, const fmpq * g,
     R->n = n;
     _fmpq_vec_clear(R->weak_c, 1);
     R->weak_c = _fmpq_vec_init(2 * n + 1);
-    motion_clear(&R->paper, 0);
-    motion_init(&R->paper, n);
+    _wc_motion_clear(&R->paper, 0);
+    _wc_motion_init(&R->paper, n);
     _wc_qvec_set(R->g, g, 3);
 
     if ((status = classify_weak(R, &m, err)) == WC_OK

@@ -93,11 +93,13 @@ facesys_edges(facesys * s, const _wc_stab_model * m, const char * x)
         fmpq_clear(ed + j);
 }
 
-/* y's rows on nudot: Table 1 signs of a = J^T nudot.  */
+/* y's rows on nudot: Table 1 signs of a = J^T nudot; with closed, every
+   > row as >= (the closure of the face).  */
 static void
 facesys_motion_rows(facesys * s, const _wc_stab_model * m, const char * y,
-                    int rot)
+                    int rot, int closed)
 {
+    wc_relation gt = closed ? WC_REL_GE : WC_REL_GT;
     slong i;
 
     for (i = 0; i < m->n; i++)
@@ -118,15 +120,15 @@ facesys_motion_rows(facesys * s, const _wc_stab_model * m, const char * y,
         switch (c)
         {
         case 's':
-            put_row(s, jn, 0, WC_REL_GT);
+            put_row(s, jn, 0, gt);
             break;
         case 'l':
             put_row(s, jn, 0, WC_REL_EQ);
-            put_row(s, jt, 0, WC_REL_GT);
+            put_row(s, jt, 0, gt);
             break;
         case 'r':
             put_row(s, jn, 0, WC_REL_EQ);
-            put_row(s, jt, 1, WC_REL_GT);
+            put_row(s, jt, 1, gt);
             break;
         default:
             put_row(s, jn, 0, WC_REL_EQ);
@@ -135,28 +137,31 @@ facesys_motion_rows(facesys * s, const _wc_stab_model * m, const char * y,
         }
     }
     if (rot != 0)
-        put_row(s, m->v, rot < 0, WC_REL_GT);
+        put_row(s, m->v, rot < 0, gt);
 }
 
+/* The system over z = (nudot, lambda, alpha_1 .. alpha_ng) for the
+   wrenches sum_i alpha_i G_i, alpha_i > 0 (ng = 1: tau g).  */
 static void
 facesys_init(facesys * s, const _wc_stab_model * m, const char * y,
-             const char * x, int rot, const fmpq * g)
+             const char * x, int rot, const fmpq * G, slong ng, int closed)
 {
-    slong j, k, e, nv;
+    slong j, k, e, nv, i;
     fmpq w[3];
 
     facesys_edges(s, m, x);
     e = s->e;
-    nv = 3 + e + 1;
-    fmpq_mat_init(s->A, 3 + 2 * m->n + 1 + e + 1, nv);
+    nv = 3 + e + ng;
+    fmpq_mat_init(s->A, 3 + 2 * m->n + 1 + e + ng, nv);
     s->rel = flint_malloc(sizeof(wc_relation) * fmpq_mat_nrows(s->A));
 
-    /* M nudot - sum lambda_j w_j - tau g = 0 */
+    /* M nudot - sum lambda_j w_j - sum alpha_i G_i = 0 */
     for (k = 0; k < 3; k++)
     {
         fmpq_init(w + k);
         fmpq_set(fmpq_mat_entry(s->A, k, k), m->M + k);
-        fmpq_neg(fmpq_mat_entry(s->A, k, nv - 1), g + k);
+        for (i = 0; i < ng; i++)
+            fmpq_neg(fmpq_mat_entry(s->A, k, 3 + e + i), G + 3 * i + k);
         s->rel[k] = WC_REL_EQ;
     }
     for (j = 0; j < e; j++)
@@ -166,14 +171,17 @@ facesys_init(facesys * s, const _wc_stab_model * m, const char * y,
             fmpq_neg(fmpq_mat_entry(s->A, k, 3 + j), w + k);
     }
     s->rows = 3;
-    facesys_motion_rows(s, m, y, rot);
+    facesys_motion_rows(s, m, y, rot, closed);
     for (j = 0; j < e; j++)
     {
         fmpq_one(fmpq_mat_entry(s->A, s->rows, 3 + j));
         s->rel[s->rows++] = WC_REL_GE;
     }
-    fmpq_one(fmpq_mat_entry(s->A, s->rows, nv - 1));
-    s->rel[s->rows++] = WC_REL_GT;
+    for (i = 0; i < ng; i++)
+    {
+        fmpq_one(fmpq_mat_entry(s->A, s->rows, 3 + e + i));
+        s->rel[s->rows++] = WC_REL_GT;
+    }
     _wc_fmpq_mat_keep_rows(s->A, s->rows);
     for (k = 0; k < 3; k++)
         fmpq_clear(w + k);
@@ -277,17 +285,28 @@ _wc_face_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
                const _wc_stab_model * m, const char * y, const char * x,
                int rot, const fmpq * g, wc_error_t err)
 {
+    return _wc_face_solve_cone(nudot, c, mult, nmult, m, y, x, rot, g, 1,
+                               0, err);
+}
+
+int
+_wc_face_solve_cone(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
+                    const _wc_stab_model * m, const char * y,
+                    const char * x, int rot, const fmpq * G, slong ng,
+                    int closed, wc_error_t err)
+{
     facesys s;
     slong nv, k;
     fmpq * z, * y0 = NULL;
-    int r;
+    const fmpq * g = G;
+    int r, plain = ng == 1 && !closed;
 
-    facesys_init(&s, m, y, x, rot, g);
-    nv = 3 + s.e + 1;
+    facesys_init(&s, m, y, x, rot, G, ng, closed);
+    nv = 3 + s.e + ng;
     z = _fmpq_vec_init(nv);
-    if (mult == NULL && rot == 0 && zero_face(m, y))
+    if (plain && mult == NULL && rot == 0 && zero_face(m, y))
         r = zero_face_solve(z, &s, m, g, err);
-    else if (s.e == 0 && mult == NULL)
+    else if (plain && s.e == 0 && mult == NULL)
     {
         /* Without a force edge the motion can only be nudot = M^-1 g.  */
         for (k = 0; k < 3; k++)
@@ -309,7 +328,7 @@ _wc_face_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
         if (y0 != NULL)
             _fmpq_vec_clear(y0, s.rows);
     }
-    if (r == 1)
+    if (r == 1 && ng == 1 && nudot != NULL)
         facesys_motion(nudot, c, &s, m, z);
     _fmpq_vec_clear(z, nv);
     facesys_clear(&s);

@@ -26,4 +26,16 @@ int _wc_face_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
                    const _wc_stab_model * m, const char * y, const char * x,
                    int rot, const fmpq * g, wc_error_t err);
 
+/* The same for the cone of wrenches sum_i alpha_i G_i with every
+   alpha_i > 0 (G: ng wrenches, 3 entries each; ng = 0 the zero wrench):
+   the system's last ng columns are the alpha_i, each with a row
+   alpha_i > 0 (ng = 1 is the system above, alpha_1 its tau).  closed
+   relaxes y's > rows on nudot to >= (the closure of the face).  A motion
+   is filled in only for ng = 1 and nudot not NULL.  */
+int _wc_face_solve_cone(fmpq * nudot, fmpq * c, fmpq ** mult,
+                        slong * nmult, const _wc_stab_model * m,
+                        const char * y, const char * x, int rot,
+                        const fmpq * G, slong ng, int closed,
+                        wc_error_t err);
+
 #endif

@@ -13,6 +13,7 @@ lib_libwc_la_SOURCES += \
 	lib/analysis/facesys.c \
 	lib/analysis/classify.c \
 	lib/analysis/stability.c \
+	lib/analysis/stabcert.c \
 	lib/analysis/planstr.c \
 	lib/analysis/plancones.c \
 	lib/analysis/plangraph.c \
@@ -29,4 +30,5 @@ wcanalysis_HEADERS = \
 noinst_HEADERS += \
 	lib/analysis/planparts.h \
 	lib/analysis/stabmodel.h \
-	lib/analysis/facesys.h
+	lib/analysis/facesys.h \
+	lib/analysis/stabcert.h

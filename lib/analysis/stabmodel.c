@@ -215,3 +215,93 @@ _wc_stab_moving_faces(const _wc_stab_model * m,
     wc_modes_clear(T);
     return status;
 }
+
+/* ---------------------------------------------------------------------
+   Weak stability: a static solution or a separator.  */
+
+/* c (2n) := the forces of lambda over the mu_s edges of the touching
+   fixels, two per fixel.  */
+static void
+static_forces(fmpq * c, const _wc_stab_model * m, const fmpq * lambda)
+{
+    slong n = m->n, j;
+    fmpq ed[4];
+
+    for (j = 0; j < 4; j++)
+        fmpq_init(ed + j);
+    _wc_qvec_zero(c, 2 * n);
+    for (j = 0; j < 2 * m->t; j++)
+    {
+        slong f = m->tidx[j / 2];
+
+        wc_friction_edges(ed, m->P->fixels + f, 'n');
+        fmpq_addmul(c + f, lambda + j, ed + 2 * (j % 2));
+        fmpq_addmul(c + n + f, lambda + j, ed + 2 * (j % 2) + 1);
+    }
+    for (j = 0; j < 4; j++)
+        fmpq_clear(ed + j);
+}
+
+int
+_wc_stab_weak(fmpq * c, fmpq * sep, const _wc_stab_model * m,
+              const fmpq * g, wc_error_t err)
+{
+    const wc_problem_struct * P = m->P;
+    slong t = m->t, i, j, ne = 2 * t;
+    fmpq * z, * w, ed[4];
+    int r;
+
+    if (t == 0)
+    {
+        _wc_qvec_zero(c, 2 * m->n);
+        _wc_qvec_set(sep, g, 3);
+        return _wc_qvec_is_zero(g, 3);
+    }
+    for (j = 0; j < 4; j++)
+        fmpq_init(ed + j);
+    w = _fmpq_vec_init(3 * ne);
+    for (i = 0; i < t; i++)
+    {
+        wc_friction_edges(ed, P->fixels + m->tidx[i], 'n');
+        _wc_stab_edge_wrench(w + 3 * (2 * i), m, m->tidx[i], ed);
+        _wc_stab_edge_wrench(w + 3 * (2 * i + 1), m, m->tidx[i], ed + 2);
+    }
+
+    /* g = sum lambda_j (-w_j), or a separator.  */
+    for (j = 0; j < 3 * ne; j++)
+        fmpq_neg(w + j, w + j);
+    z = _fmpq_vec_init(ne + 1);
+    r = _wc_lp_cone3(z, sep, w, ne, g, err);
+    if (r < 0)
+        wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "internal error: "
+                     "the static solution fails its check");
+    else if (r == 1)
+        static_forces(c, m, z);
+    _fmpq_vec_clear(z, ne + 1);
+    _fmpq_vec_clear(w, 3 * ne);
+    for (j = 0; j < 4; j++)
+        fmpq_clear(ed + j);
+    return r;
+}
+
+void
+_wc_motion_init(wc_motion_struct * a, slong n)
+{
+    slong k;
+
+    a->sign = NULL;
+    for (k = 0; k < 3; k++)
+        fmpq_init(a->nudot + k);
+    a->c = _fmpq_vec_init(2 * n + 1);
+}
+
+void
+_wc_motion_clear(wc_motion_struct * a, slong n)
+{
+    slong k;
+
+    free(a->sign);
+    for (k = 0; k < 3; k++)
+        fmpq_clear(a->nudot + k);
+    _fmpq_vec_clear(a->c, 2 * n + 1);
+}

@@ -17,6 +17,7 @@
 #include "core/error.h"
 #include "core/problem.h"
 #include "analysis/kinematics.h"
+#include "analysis/stability.h"
 
 typedef struct
 {
@@ -59,5 +60,17 @@ char * _wc_stab_expand(const _wc_stab_model * m, const char * s);
 
 /* 1 when y has n on every touching fixel.  */
 int _wc_stab_all_n(const _wc_stab_model * m, const char * y);
+
+/* Is g (3) weakly stable?  1 with static forces c (2n: c_1n .. c_nn,
+   c_1t .. c_nt) in the mu_s friction cones, g = -J c; 0 with sep (3),
+   sep . g > 0 and sep . (J_in +- mu_s J_it) >= 0 at every touching fixel
+   (sep = g when none touches); -1 on failure (err set).  */
+int _wc_stab_weak(fmpq * c, fmpq * sep, const _wc_stab_model * m,
+                  const fmpq * g, wc_error_t err);
+
+/* A motion with room for n fixels' forces (sign NULL); the clear frees
+   sign.  */
+void _wc_motion_init(wc_motion_struct * a, slong n);
+void _wc_motion_clear(wc_motion_struct * a, slong n);
 
 #endif

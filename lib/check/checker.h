@@ -126,7 +126,8 @@ wc_check_reader;
 typedef enum
 {
     WC_CHECK_MODE = 0,          /* "mode-feasibility" or no "kind" */
-    WC_CHECK_STABILITY = 1      /* "strong-stability" */
+    WC_CHECK_STABILITY = 1,     /* "strong-stability" */
+    WC_CHECK_SET = 2            /* "stability-set" */
 }
 wc_check_kind;
 
@@ -336,6 +337,16 @@ void _wc_check_stability_clear(wc_check_stability * S);
 void _wc_check_read_stability(wc_check_stability * S, wc_check_reader * c,
                               const wc_json_node * root);
 
+/* root[key], an array of faces, into S->faces (with their multipliers
+   when mult); errors into c.  */
+void _wc_check_read_faces(wc_check_reader * c, wc_check_stability * S,
+                          const wc_json_node * root, const char * key,
+                          int mult);
+
+/* The sign strings of S (the motion's, the faces') against the problem;
+   errors into c.  */
+void _wc_check_signs(wc_check_reader * c, const wc_check_stability * S);
+
 /* What the checks of one strong-stability certificate share.  */
 typedef struct
 {
@@ -344,12 +355,47 @@ typedef struct
     mpq_t * s;          /* 3 */
     mpq_t a, b, t;
     wc_check_text * why;
+    /* The wrenches the checks speak of: sum_i alpha_i G_i, alpha_i > 0
+       (S->g alone, ng = 1, for one wrench).  */
+    mpq_t * G;
+    size_t ng;
+    /* The motion checked by _wc_check_motion: of the closure of its face
+       (> relaxed to >=, nudot = 0 allowed) when closed; rotation +-1 on
+       a rotation face (rho v . nudot > 0), else 0.  */
+    int closed;
+    int rotation;
 }
 wc_check_scratch;
+
+/* X->J := the Jacobian columns of X->S->P, the rest initialised (G = S->g,
+   ng = 1, closed = rotation = 0).  0 when out of memory (then clear).  */
+int _wc_check_scratch_init(wc_check_scratch * X, const wc_check_stability * S,
+                           wc_check_text * why);
+void _wc_check_scratch_clear(wc_check_scratch * X);
 
 /* The faces claim: exactly the moving faces, each once, each without a
    solution.  */
 int _wc_check_faces(wc_check_scratch * X);
+
+/* The faces S->faces are exactly the moving faces, each once (their
+   multipliers are not looked at).  1, 0 or -1.  */
+int _wc_check_face_list(wc_check_scratch * X);
+
+/* The Motzkin multipliers of face F (number k, 0-based) prove that no
+   wrench of X (X->G, X->ng) has a motion of F.  1, 0 or -1.  */
+int _wc_check_face(wc_check_scratch * X, size_t k, const wc_check_face * F);
+
+/* The static forces S->weak_c hold the wrench S->g.  1 or 0.  */
+int _wc_check_static(wc_check_scratch * X);
+
+/* The motion (S->motion_sign, S->nudot, S->motion_c) moves under the
+   wrench S->g, in the mode of its sign (of its closure with X->closed).
+   1 or 0.  */
+int _wc_check_motion(wc_check_scratch * X);
+
+/* y . (J_in -+ mu_s J_it) >= 0 at every touching fixel: y separates the
+   weak cone.  1 or 0 (why written after "the separator y = (..) has").  */
+int _wc_check_separates(wc_check_scratch * X, mpq_t * y);
 
 /* Check the strong-stability certificate at root (its kind read).
    Returns c->status; with WC_OK, *holds, why and what (the claim).  */
@@ -357,5 +403,61 @@ int _wc_check_stability_certificate(wc_check_reader * c,
                                     const wc_json_node * root,
                                     int * holds, wc_check_text * why,
                                     wc_check_text * what);
+
+/* ------------------------------------------------------------------ */
+/* Stability-set certificates (setread.c, setcheck.c).                 */
+
+#define WC_CHECK_KIND_SET "stability-set"
+
+/* One piece of a claimed set: the closure {a . x >= 0, e . x = 0}, its
+   rays and lines, its faces (rays, dim, included) and, once checked, each
+   face's tight inequalities.  */
+typedef struct
+{
+    const wc_json_node * at;
+    size_t nineq, neq, nrays, nlines, nfaces;
+    mpq_t * ineq, * eq, * rays, * lines;    /* 3 each */
+    size_t * foff, * fray;      /* face f: rays fray[foff[f] .. foff[f+1]) */
+    int * fincl;
+    long * fdim;
+    unsigned char * ftight;     /* nfaces x nineq */
+    long dim, lin;
+}
+wc_check_piece;
+
+/* A claimed set, as stability --format=json writes it.  */
+typedef struct
+{
+    const wc_json_node * at;
+    int empty, interior;
+    size_t npieces;
+    wc_check_piece * pc;
+}
+wc_check_claim;
+
+void _wc_check_claim_clear(wc_check_claim * C);
+
+/* root[key] into C (all zero before).  */
+int _wc_check_read_claim(wc_check_reader * c, wc_check_claim * C,
+                         const wc_json_node * root, const char * key);
+
+/* C describes its pieces consistently, with every constraint on one of
+   the nplanes sorted planes H.  1, 0 (why written) or -1.  */
+int _wc_check_claim_valid(wc_check_text * why, wc_check_claim * C,
+                          mpz_t * H, size_t nplanes);
+
+/* How many pieces of C (checked valid) hold x: 0, 1 or 2 (two or more);
+   -1 when x is in the closure of piece *bad but in no listed face of it,
+   or in two.  d, t scratch.  */
+int _wc_check_claim_locate(const wc_check_claim * C, mpq_t * x, mpq_t d,
+                           mpq_t t, size_t * bad);
+
+/* -1, 0, 1 as a < b lexicographically.  */
+int _wc_check_zcmp3(mpz_t * a, mpz_t * b);
+
+/* Check the stability-set certificate at root (its kind read).  */
+int _wc_check_set_certificate(wc_check_reader * c,
+                              const wc_json_node * root, int * holds,
+                              wc_check_text * why, wc_check_text * what);
 
 #endif

@@ -31,8 +31,8 @@ put_face(wc_check_text * b, size_t k, const char * sign, int rotation)
 }
 
 /* The system of one face: e friction edges w (3 e), rows rows with
-   relations rel, d unknowns (nudot, lambda, tau) and s = sum_k y_k
-   row_k (d).  */
+   relations rel, d unknowns (nudot, lambda, alpha) and s = sum_k y_k
+   row_k (d); alpha has one entry per wrench X->G (tau for one wrench).  */
 typedef struct
 {
     size_t e, rows, d;
@@ -53,7 +53,7 @@ face_letter(const wc_check_face * F, size_t i)
 /* The sizes of the system of F.  */
 static void
 face_sizes(face_system * Y, const wc_check_problem * P,
-           const wc_check_face * F)
+           const wc_check_face * F, size_t ng)
 {
     size_t i;
 
@@ -73,8 +73,8 @@ face_sizes(face_system * Y, const wc_check_problem * P,
     }
     if (F->rotation != 0)
         Y->rows += 1;
-    Y->rows += Y->e + 1;
-    Y->d = 3 + Y->e + 1;
+    Y->rows += Y->e + ng;
+    Y->d = 3 + Y->e + ng;
 }
 
 /* The friction edges (1, et), in fixel order: w_j = J_in + et J_it, with
@@ -156,7 +156,7 @@ face_rows(face_system * Y, wc_check_scratch * X, const wc_check_face * F,
     size_t r, j;
     int c;
 
-    /* M nudot - sum_j lambda_j w_j - tau g = 0 */
+    /* M nudot - sum_j lambda_j w_j - sum_i alpha_i G_i = 0 */
     for (c = 0; c < 3; c++)
     {
         Y->rel[c] = WC_CHECK_EQ;
@@ -166,8 +166,11 @@ face_rows(face_system * Y, wc_check_scratch * X, const wc_check_face * F,
             mpq_mul(X->t, y[c], Y->w[3 * j + c]);
             mpq_sub(Y->s[3 + j], Y->s[3 + j], X->t);
         }
-        mpq_mul(X->t, y[c], S->g[c]);
-        mpq_sub(Y->s[Y->d - 1], Y->s[Y->d - 1], X->t);
+        for (j = 0; j < X->ng; j++)
+        {
+            mpq_mul(X->t, y[c], X->G[3 * j + c]);
+            mpq_sub(Y->s[3 + Y->e + j], Y->s[3 + Y->e + j], X->t);
+        }
     }
     r = face_contact_rows(Y, X, F, y, 3);
     if (F->rotation != 0)
@@ -186,26 +189,27 @@ face_rows(face_system * Y, wc_check_scratch * X, const wc_check_face * F,
         }
         r++;
     }
-    /* lambda_j >= 0, tau > 0 */
+    /* lambda_j >= 0, alpha_i > 0 */
     for (j = 0; j < Y->e; j++, r++)
     {
         Y->rel[r] = WC_CHECK_GE;
         mpq_add(Y->s[3 + j], Y->s[3 + j], y[r]);
     }
-    Y->rel[r] = WC_CHECK_GT;
-    mpq_add(Y->s[Y->d - 1], Y->s[Y->d - 1], y[r]);
+    for (j = 0; j < X->ng; j++, r++)
+    {
+        Y->rel[r] = WC_CHECK_GT;
+        mpq_add(Y->s[3 + Y->e + j], Y->s[3 + Y->e + j], y[r]);
+    }
 }
 
-/* The Motzkin multipliers of face F (number k, 0-based) for the system of
-   wrenchcone-certificate(5).  1 or 0; -1 when out of memory.  */
-static int
-check_face(wc_check_scratch * X, size_t k, const wc_check_face * F)
+int
+_wc_check_face(wc_check_scratch * X, size_t k, const wc_check_face * F)
 {
     wc_check_text * why = X->why, prefix = { NULL, 0, 0, 0 };
     face_system Y;
     int holds = -1;
 
-    face_sizes(&Y, &X->S->P, F);
+    face_sizes(&Y, &X->S->P, F, X->ng);
     Y.w = _wc_check_qvec_new(_wc_check_times(3, Y.e));
     Y.s = _wc_check_qvec_new(Y.d);
     Y.rel = _wc_check_alloc(Y.rows, sizeof(wc_check_rel));
@@ -335,6 +339,17 @@ check_complete(wc_check_scratch * X, const wc_check_strings * T,
 int
 _wc_check_faces(wc_check_scratch * X)
 {
+    size_t k;
+    int holds = _wc_check_face_list(X);
+
+    for (k = 0; holds == 1 && k < X->S->nfaces; k++)
+        holds = _wc_check_face(X, k, X->S->faces + k);
+    return holds;
+}
+
+int
+_wc_check_face_list(wc_check_scratch * X)
+{
     const wc_check_stability * S = X->S;
     wc_check_strings T = { 0, 0, NULL, 0, 0 };
     size_t * seen = NULL, rot_seen[2] = { 0, 0 }, k;
@@ -350,8 +365,6 @@ _wc_check_faces(wc_check_scratch * X)
     holds = check_listed(X, &T, seen, rot_seen, shared);
     if (holds == 1)
         holds = check_complete(X, &T, seen, rot_seen, shared);
-    for (k = 0; holds == 1 && k < S->nfaces; k++)
-        holds = check_face(X, k, S->faces + k);
 cleanup:
     free(seen);
     _wc_check_strings_clear(&T);

@@ -11,6 +11,41 @@
 
 #include "check/checker.h"
 
+int
+_wc_check_scratch_init(wc_check_scratch * X, const wc_check_stability * S,
+                       wc_check_text * why)
+{
+    size_t i;
+
+    X->S = S;
+    X->why = why;
+    X->J = _wc_check_qvec_new(_wc_check_times(6, S->P.n));
+    X->s = _wc_check_qvec_new(3);
+    mpq_init(X->a);
+    mpq_init(X->b);
+    mpq_init(X->t);
+    X->G = S->g;
+    X->ng = 1;
+    X->closed = 0;
+    X->rotation = 0;
+    if (X->J == NULL || X->s == NULL)
+        return 0;
+    for (i = 0; i < S->P.n; i++)
+        _wc_check_jacobian(X->J + 6 * i, &S->P, i);
+    return 1;
+}
+
+void
+_wc_check_scratch_clear(wc_check_scratch * X)
+{
+    _wc_check_qvec_free(X->J, 6 * X->S->P.n);
+    _wc_check_qvec_free(X->s, 3);
+    X->J = X->s = NULL;
+    mpq_clear(X->a);
+    mpq_clear(X->b);
+    mpq_clear(X->t);
+}
+
 /* Names of the quantities of fixel i (0-based) in messages.  */
 typedef struct
 {
@@ -29,26 +64,14 @@ names_of(fixel_names * N, size_t i)
     sprintf(N->ct, "c_%lut", k);
 }
 
-/* The separator y of a wrench that is not weakly stable.  1 or 0.  */
-static int
-check_separator(wc_check_scratch * X)
+int
+_wc_check_separates(wc_check_scratch * X, mpq_t * y)
 {
     const wc_check_stability * S = X->S;
     wc_check_text * why = X->why;
-    mpq_t * y = S->sep;
     size_t i;
     int e;
 
-    _wc_check_qdot3(X->a, y, S->g, X->t);
-    if (mpq_sgn(X->a) <= 0)
-    {
-        _wc_check_put(why, "the separator y = ");
-        _wc_check_put_qvec(why, y, 3);
-        _wc_check_put(why, " has y . g = ");
-        _wc_check_put_q(why, X->a);
-        _wc_check_put(why, ", not > 0");
-        return 0;
-    }
     for (i = 0; i < S->P.n; i++)
     {
         if (S->P.near[i])
@@ -77,6 +100,27 @@ check_separator(wc_check_scratch * X)
         }
     }
     return 1;
+}
+
+/* The separator y of a wrench that is not weakly stable.  1 or 0.  */
+static int
+check_separator(wc_check_scratch * X)
+{
+    const wc_check_stability * S = X->S;
+    wc_check_text * why = X->why;
+    mpq_t * y = S->sep;
+
+    _wc_check_qdot3(X->a, y, S->g, X->t);
+    if (mpq_sgn(X->a) <= 0)
+    {
+        _wc_check_put(why, "the separator y = ");
+        _wc_check_put_qvec(why, y, 3);
+        _wc_check_put(why, " has y . g = ");
+        _wc_check_put_q(why, X->a);
+        _wc_check_put(why, ", not > 0");
+        return 0;
+    }
+    return _wc_check_separates(X, y);
 }
 
 /* 0 and "the static forces load fixel 2, which is near: c_2n = 1,
@@ -114,9 +158,8 @@ add_forces(wc_check_scratch * X, mpq_t * c, size_t i)
     }
 }
 
-/* The static forces of a weakly stable wrench.  1 or 0.  */
-static int
-check_static(wc_check_scratch * X)
+int
+_wc_check_static(wc_check_scratch * X)
 {
     const wc_check_stability * S = X->S;
     wc_check_text * why = X->why;
@@ -179,7 +222,7 @@ check_balance(wc_check_scratch * X, mpq_t * Mnu)
     size_t i;
     int j;
 
-    if (_wc_check_qvec_is_zero(nu, 3))
+    if (!X->closed && _wc_check_qvec_is_zero(nu, 3))
     {
         _wc_check_put(why, "the motion has nudot = 0");
         return 0;
@@ -277,11 +320,11 @@ check_letter(wc_check_scratch * X, size_t i)
     _wc_check_qdot3(X->b, X->J + 6 * i + 3, S->nudot, X->t);
     sn = mpq_sgn(X->a);
     st = mpq_sgn(X->b);
-    if (l == 's' ? sn <= 0 : sn != 0)
+    if (l == 's' ? sn < 0 || (sn == 0 && !X->closed) : sn != 0)
     {
         motion_needs(why, l, i);
-        _wc_check_putf(why, "%s %s 0, but %s = ", N.an, l == 's' ? ">"
-                       : "=", N.an);
+        _wc_check_putf(why, "%s %s 0, but %s = ", N.an, l != 's' ? "="
+                       : X->closed ? ">=" : ">", N.an);
         _wc_check_put_q(why, X->a);
         return 0;
     }
@@ -296,20 +339,45 @@ check_letter(wc_check_scratch * X, size_t i)
         _wc_check_put_q(why, *ct);
         return 0;
     }
-    if (l == 'l' ? st <= 0 : l == 'r' ? st >= 0 : st != 0)
+    if (l == 'l' ? st < 0 || (st == 0 && !X->closed)
+        : l == 'r' ? st > 0 || (st == 0 && !X->closed) : st != 0)
     {
         motion_needs(why, l, i);
-        _wc_check_putf(why, "%s %s 0, but %s = ", N.at,
-                       l == 'l' ? ">" : l == 'r' ? "<" : "=", N.at);
+        _wc_check_putf(why, "%s %s%s 0, but %s = ", N.at,
+                       l == 'l' ? ">" : l == 'r' ? "<" : "=",
+                       l != 'n' && X->closed ? "=" : "", N.at);
         _wc_check_put_q(why, X->b);
         return 0;
     }
     return check_friction(X, i, l, &N);
 }
 
-/* The motion: a moving solution in the mode of its sign.  1 or 0.  */
+/* On a rotation face: rho v . nudot > 0 (>= 0 for the closure), v =
+   J_1n x J_1t of the first touching fixel.  1 or 0.  */
 static int
-check_motion(wc_check_scratch * X)
+check_turn(wc_check_scratch * X, mpq_t * v)
+{
+    const wc_check_stability * S = X->S;
+    size_t i;
+
+    for (i = 0; i < S->P.n && S->P.near[i]; i++)
+        ;
+    if (X->rotation == 0 || i == S->P.n)
+        return 1;
+    _wc_check_qcross3(v, X->J + 6 * i, X->J + 6 * i + 3, X->t);
+    _wc_check_qdot3(X->a, v, S->nudot, X->t);
+    if (X->rotation < 0)
+        mpq_neg(X->a, X->a);
+    if (mpq_sgn(X->a) > 0 || (X->closed && mpq_sgn(X->a) == 0))
+        return 1;
+    _wc_check_putf(X->why, "the motion needs rotation %d: rho v . nudot %s "
+                   "0, but it is ", X->rotation, X->closed ? ">=" : ">");
+    _wc_check_put_q(X->why, X->a);
+    return 0;
+}
+
+int
+_wc_check_motion(wc_check_scratch * X)
 {
     mpq_t Mnu[3];
     size_t i;
@@ -321,6 +389,8 @@ check_motion(wc_check_scratch * X)
     for (i = 0; holds == 1 && i < X->S->P.n; i++)
         if (!X->S->P.near[i])
             holds = check_letter(X, i);
+    if (holds == 1)
+        holds = check_turn(X, Mnu);
     for (j = 0; j < 3; j++)
         mpq_clear(Mnu[j]);
     return holds;
@@ -351,22 +421,12 @@ check_stability(wc_check_text * why, wc_check_text * what,
                 const wc_check_stability * S)
 {
     wc_check_scratch X;
-    size_t i;
     int holds = -1;
 
-    X.S = S;
-    X.why = why;
-    X.J = _wc_check_qvec_new(_wc_check_times(6, S->P.n));
-    X.s = _wc_check_qvec_new(3);
-    mpq_init(X.a);
-    mpq_init(X.b);
-    mpq_init(X.t);
-    if (X.J == NULL || X.s == NULL)
+    if (!_wc_check_scratch_init(&X, S, why))
         goto cleanup;
-    for (i = 0; i < S->P.n; i++)
-        _wc_check_jacobian(X.J + 6 * i, &S->P, i);
     stability_summary(what, S);
-    holds = S->weak ? check_static(&X) : check_separator(&X);
+    holds = S->weak ? _wc_check_static(&X) : check_separator(&X);
     if (holds == 1 && S->strong && !S->weak)
     {
         _wc_check_put(why, "strongly_stable is true but weakly_stable is "
@@ -374,17 +434,13 @@ check_stability(wc_check_text * why, wc_check_text * what,
         holds = 0;
     }
     if (holds == 1 && S->weak && !S->strong)
-        holds = check_motion(&X);
+        holds = _wc_check_motion(&X);
     if (holds == 1 && S->strong)
         holds = _wc_check_faces(&X);
 cleanup:
     if (why->oom || what->oom)
         holds = -1;
-    _wc_check_qvec_free(X.J, 6 * S->P.n);
-    _wc_check_qvec_free(X.s, 3);
-    mpq_clear(X.a);
-    mpq_clear(X.b);
-    mpq_clear(X.t);
+    _wc_check_scratch_clear(&X);
     return holds;
 }
 

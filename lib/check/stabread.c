@@ -72,9 +72,10 @@ read_motion(wc_check_reader * c, wc_check_stability * S,
                          &S->nmc);
 }
 
-/* The face at f into F.  */
+/* The face at f into F, with its multipliers when mult.  */
 static int
-read_face(wc_check_reader * c, wc_check_face * F, const wc_json_node * f)
+read_face(wc_check_reader * c, wc_check_face * F, const wc_json_node * f,
+          int mult)
 {
     const wc_json_node * v;
     int status = _wc_check_want_object(c, f);
@@ -101,20 +102,20 @@ read_face(wc_check_reader * c, wc_check_face * F, const wc_json_node * f)
             F->rotation = mpq_sgn(r);
         mpq_clear(r);
     }
-    if (_wc_check_qarray(c, f, "multipliers", WC_CHECK_ANY_LENGTH,
-                         &F->mult, &F->nmult) != WC_OK)
+    if (mult && _wc_check_qarray(c, f, "multipliers", WC_CHECK_ANY_LENGTH,
+                                 &F->mult, &F->nmult) != WC_OK)
         status = WC_EINPUT;
     return status;
 }
 
-static void
-read_faces(wc_check_reader * c, wc_check_stability * S,
-           const wc_json_node * root)
+void
+_wc_check_read_faces(wc_check_reader * c, wc_check_stability * S,
+                     const wc_json_node * root, const char * key, int mult)
 {
     const wc_json_node * a;
     size_t k;
 
-    if (_wc_check_member(c, root, "faces", WC_CHECK_ARRAY, &a) != WC_OK)
+    if (_wc_check_member(c, root, key, WC_CHECK_ARRAY, &a) != WC_OK)
         return;
     S->faces = _wc_check_alloc(a->len, sizeof(wc_check_face));
     if (S->faces == NULL)
@@ -127,7 +128,7 @@ read_faces(wc_check_reader * c, wc_check_stability * S,
     S->nfaces = a->len;
     /* a later face is later in the file */
     for (k = 0; k < a->len; k++)
-        if (read_face(c, S->faces + k, a->items + k) != WC_OK)
+        if (read_face(c, S->faces + k, a->items + k, mult) != WC_OK)
             return;
 }
 
@@ -146,9 +147,8 @@ read_weak(wc_check_reader * c, wc_check_stability * S,
         read_vector3(c, w, "separator", &S->sep);
 }
 
-/* The signs against the problem.  */
-static void
-check_signs(wc_check_reader * c, const wc_check_stability * S)
+void
+_wc_check_signs(wc_check_reader * c, const wc_check_stability * S)
 {
     size_t k;
 
@@ -195,8 +195,8 @@ _wc_check_read_stability(wc_check_stability * S, wc_check_reader * c,
     if (c->status == WC_EINTERNAL)
         return;
     if (S->strong == 1)
-        read_faces(c, S, root);
+        _wc_check_read_faces(c, S, root, "faces", 1);
     if (c->status == WC_EINTERNAL)
         return;
-    check_signs(c, S);
+    _wc_check_signs(c, S);
 }

@@ -533,11 +533,22 @@ cell_key_cmp(const void * p, const void * q)
 }
 
 slong
+wc_cells_find(const wc_cells_t A, slong dim, const signed char * sign)
+{
+    const slong * hit;
+    cell_key key;
+
+    key.A = A;
+    key.dim = dim;
+    key.sign = sign;
+    hit = bsearch(&key, A->dim, A->count, sizeof(slong), cell_key_cmp);
+    return hit == NULL ? -1 : hit - A->dim;
+}
+
+slong
 wc_cells_locate(const wc_cells_t A, const fmpq * x)
 {
     slong m = A->nplanes, q, j, zeros = 0, r = -1;
-    const slong * hit;
-    cell_key key;
     signed char * s;
     fmpz * v;
     fmpz_t den, t;
@@ -567,12 +578,8 @@ wc_cells_locate(const wc_cells_t A, const fmpq * x)
     }
     /* Distinct planes through a nonzero point: one for a sector, two or
        more for a ray.  */
-    key.A = A;
-    key.dim = !nonzero ? 0 : zeros == 0 ? 3 : zeros == 1 ? 2 : 1;
-    key.sign = s;
-    hit = bsearch(&key, A->dim, A->count, sizeof(slong), cell_key_cmp);
-    if (hit != NULL)
-        r = hit - A->dim;
+    r = wc_cells_find(A, !nonzero ? 0 : zeros == 0 ? 3 : zeros == 1 ? 2 : 1,
+                      s);
     flint_free(s);
     _fmpz_vec_clear(v, 3);
     fmpz_clear(den);

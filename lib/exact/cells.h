@@ -73,6 +73,20 @@ slong wc_cells_plane_index(const wc_cells_t A, const fmpz * h);
 /* Index of the cell holding x (3 entries), by its sign vector.  */
 slong wc_cells_locate(const wc_cells_t A, const fmpq * x);
 
+/* Index of the cell of dimension dim with sign vector sign (nplanes
+   entries), or -1 when there is none.  O(nplanes log count).  */
+slong wc_cells_find(const wc_cells_t A, slong dim, const signed char * sign);
+
+/* The extreme rays of every cell's closure, as indices of the
+   one-dimensional cells holding them, increasing: cell i has
+   ray[off[i] .. off[i + 1]) (none for the origin, itself for a ray, the
+   two bounding rays for a sector, every ray of its closure for a
+   chamber).  *off (count + 1 entries) and *ray are allocated here
+   (flint_free them).  O(m) work per sector for m planes, then a sort.
+   Returns WC_OK or WC_EINTERNAL.  */
+int wc_cells_rays(slong ** off, slong ** ray, const wc_cells_t A,
+                  wc_error_t err);
+
 /* A set of wrenches: pairwise disjoint convex NNC cones.  */
 typedef struct
 {

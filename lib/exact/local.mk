@@ -11,6 +11,7 @@ lib_libwc_la_SOURCES += \
 	lib/exact/hull3.c \
 	lib/exact/arrangement.c \
 	lib/exact/cells.c \
+	lib/exact/cellrays.c \
 	lib/exact/incidence.c \
 	lib/exact/box.c \
 	lib/exact/set.c

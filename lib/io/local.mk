@@ -5,6 +5,7 @@ lib_libwc_la_SOURCES += \
 	lib/io/print.c \
 	lib/io/cddwrite.c \
 	lib/io/stabprint.c \
+	lib/io/stabcertprint.c \
 	lib/io/planprint.c \
 	lib/io/fconeprint.c \
 	lib/io/compareprint.c

@@ -73,6 +73,15 @@ int wc_push_fprint(FILE * out, const wc_push_t R, int json,
    open (no closing brace) for the caller to add members to.  */
 int wc_stability_fprint(FILE * out, const wc_stability_t S, int json);
 
+/* Write the certificate that S->strong is exactly the strongly stable set
+   of P (kind "stability-set", wrenchcone-certificate(5)), proving every
+   cell of S's arrangement with exact LPs: O(cells x moving faces) LPs.
+   S must be wc_stability's result for P.  Returns WC_OK, or
+   WC_EINTERNAL (err set) when a proof fails (a bug: the set would be
+   wrong) or on a write error; the output is then incomplete.  */
+int wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
+                                    const wc_stability_t S, wc_error_t err);
+
 #ifdef __cplusplus
 }
 #endif

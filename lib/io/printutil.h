@@ -15,6 +15,8 @@
 #include <flint/fmpz.h>
 #include <flint/fmpq.h>
 
+#include "core/problem.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -37,5 +39,9 @@ void _wc_fprint_zvec(FILE * out, const fmpz * v, slong len, int json);
 #ifdef __cplusplus
 }
 #endif
+
+/* The problem of a certificate with dynamics (mass, inertia, friction),
+   as wrenchcone-certificate(5) gives it: one JSON object.  */
+void _wc_fprint_dyn_problem(FILE * out, const wc_problem_t P);
 
 #endif

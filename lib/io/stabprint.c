@@ -341,14 +341,14 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
     return _wc_fprint_done(out);
 }
 
-/* The certificate (wrenchcone-certificate(5), kind "strong-stability").  */
-int
-wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
-                               const wc_classify_t R)
+/* The problem of a certificate with dynamics: mass, inertia, com and the
+   fixels with their friction (wrenchcone-certificate(5)).  */
+void
+_wc_fprint_dyn_problem(FILE * out, const wc_problem_t P)
 {
     slong i;
 
-    fputs("{\"kind\": \"strong-stability\",\n \"problem\": {\"mass\": ", out);
+    fputs("{\"mass\": ", out);
     _wc_fprint_jq(out, P->mass);
     fputs(", \"inertia\": ", out);
     _wc_fprint_jq(out, P->inertia);
@@ -371,7 +371,19 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
         _wc_fprint_jq(out, f->mu_k);
         fputc('}', out);
     }
-    fputs("]},\n \"wrench\": ", out);
+    fputs("]}", out);
+}
+
+/* The certificate (wrenchcone-certificate(5), kind "strong-stability").  */
+int
+wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
+                               const wc_classify_t R)
+{
+    slong i;
+
+    fputs("{\"kind\": \"strong-stability\",\n \"problem\": ", out);
+    _wc_fprint_dyn_problem(out, P);
+    fputs(",\n \"wrench\": ", out);
     wc_fprint_qvec(out, R->g, 3, 1);
     fprintf(out, ",\n \"weakly_stable\": %s,\n \"weak\": ",
             R->weak ? "true" : "false");

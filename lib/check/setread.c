@@ -1,0 +1,572 @@
+/* setread.c -- the claimed set of a stability-set certificate: its
+   pieces, read, checked for consistency, and asked which holds a point.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   A piece is a convex cone written as wrenchcone stability --format=json
+   writes it: the closure C = {x : a . x >= 0 (inequalities), e . x = 0
+   (equalities)}, its rays and lines, and its faces, each with the rays it
+   holds and whether the piece includes its relative interior.  The set
+   the checker certifies is read from the closure and the included faces:
+   x is in the piece when x is in C and the inequalities tight at x are
+   exactly those tight at the sum of an included face's rays.  The rays,
+   lines and faces are checked to describe C (setcheck.c's cells do the
+   rest): every ray in C, every line on every constraint, as many lines
+   as C's lineality space has dimensions and independent, and every point
+   of C in exactly one listed face.  */
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "check/checker.h"
+
+static void
+piece_clear(wc_check_piece * Q)
+{
+    _wc_check_qvec_free(Q->ineq, 3 * Q->nineq);
+    _wc_check_qvec_free(Q->eq, 3 * Q->neq);
+    _wc_check_qvec_free(Q->rays, 3 * Q->nrays);
+    _wc_check_qvec_free(Q->lines, 3 * Q->nlines);
+    free(Q->foff);
+    free(Q->fray);
+    free(Q->fincl);
+    free(Q->fdim);
+    free(Q->ftight);
+}
+
+void
+_wc_check_claim_clear(wc_check_claim * C)
+{
+    size_t k;
+
+    if (C->pc != NULL)
+        for (k = 0; k < C->npieces; k++)
+            piece_clear(C->pc + k);
+    free(C->pc);
+    memset(C, 0, sizeof *C);
+}
+
+/* o[key]: an array of vectors of 3 rationals, into *q (*n of them).  */
+static int
+read_vectors(wc_check_reader * c, const wc_json_node * o, const char * key,
+             mpq_t ** q, size_t * n)
+{
+    const wc_json_node * a;
+    size_t k;
+    int j;
+
+    if (_wc_check_member(c, o, key, WC_CHECK_ARRAY, &a) != WC_OK)
+        return WC_EINPUT;
+    *q = _wc_check_qvec_new(_wc_check_times(3, a->len));
+    if (*q == NULL)
+        return _wc_check_nomem(c);
+    *n = a->len;
+    for (k = 0; k < a->len; k++)
+    {
+        const wc_json_node * v = a->items + k;
+
+        if (v->type != WC_JSON_ARRAY || v->len != 3)
+            return _wc_check_bad(c, v, "expected an array of 3 numbers");
+        for (j = 0; j < 3; j++)
+            if (_wc_check_rational(c, v->items + j, (*q)[3 * k + j])
+                != WC_OK)
+                return WC_EINPUT;
+    }
+    return WC_OK;
+}
+
+/* A non-negative integer below limit at v, into *i.  */
+static int
+read_index(wc_check_reader * c, const wc_json_node * v, size_t limit,
+           size_t * i, const char * what)
+{
+    mpq_t q;
+    int status = WC_OK;
+
+    mpq_init(q);
+    if (_wc_check_rational(c, v, q) != WC_OK)
+        status = WC_EINPUT;
+    else if (mpz_cmp_ui(mpq_denref(q), 1) != 0 || mpq_sgn(q) < 0
+             || mpz_cmp_ui(mpq_numref(q), limit) >= 0)
+        status = _wc_check_bad(c, v, "%s must be an integer from 0 to %lu",
+                               what, (unsigned long) limit - 1);
+    else
+        *i = mpz_get_ui(mpq_numref(q));
+    mpq_clear(q);
+    return status;
+}
+
+/* o[key], a dimension 0 .. 3, into *d.  */
+static int
+read_dim(wc_check_reader * c, const wc_json_node * o, const char * key,
+         long * d)
+{
+    const wc_json_node * v = _wc_json_object_get(o, key);
+    size_t i = 0;
+
+    if (v == NULL)
+        return _wc_check_bad(c, o, "missing key '%s'", key);
+    if (read_index(c, v, 4, &i, key) != WC_OK)
+        return WC_EINPUT;
+    *d = (long) i;
+    return WC_OK;
+}
+
+/* The faces of Q from the array a.  */
+static int
+read_piece_faces(wc_check_reader * c, wc_check_piece * Q,
+                 const wc_json_node * a)
+{
+    size_t f, k, total = 0, at = 0;
+
+    for (f = 0; f < a->len; f++)
+    {
+        const wc_json_node * r;
+
+        if (_wc_check_want_object(c, a->items + f) != WC_OK
+            || _wc_check_member(c, a->items + f, "rays", WC_CHECK_ARRAY, &r)
+            != WC_OK)
+            return WC_EINPUT;
+        total += r->len;
+    }
+    Q->nfaces = a->len;
+    Q->foff = _wc_check_alloc(a->len + 1, sizeof(size_t));
+    Q->fray = _wc_check_alloc(total, sizeof(size_t));
+    Q->fincl = _wc_check_alloc(a->len, sizeof(int));
+    Q->fdim = _wc_check_alloc(a->len, sizeof(long));
+    if (Q->foff == NULL || Q->fray == NULL || Q->fincl == NULL
+        || Q->fdim == NULL)
+        return _wc_check_nomem(c);
+    for (f = 0; f < a->len; f++)
+    {
+        const wc_json_node * o = a->items + f, * r, * inc;
+
+        Q->foff[f] = at;
+        _wc_check_member(c, o, "rays", WC_CHECK_ARRAY, &r);
+        for (k = 0; k < r->len; k++)
+            if (read_index(c, r->items + k, Q->nrays, Q->fray + at++,
+                           "a face's ray") != WC_OK)
+                return WC_EINPUT;
+        if (_wc_check_member(c, o, "included", WC_CHECK_BOOL, &inc)
+            != WC_OK || read_dim(c, o, "dim", Q->fdim + f) != WC_OK)
+            return WC_EINPUT;
+        Q->fincl[f] = inc->type == WC_JSON_TRUE;
+    }
+    Q->foff[a->len] = at;
+    return WC_OK;
+}
+
+static int
+read_piece(wc_check_reader * c, wc_check_piece * Q, const wc_json_node * o)
+{
+    const wc_json_node * a, * e;
+
+    Q->at = o;
+    if (_wc_check_want_object(c, o) != WC_OK
+        || _wc_check_member(c, o, "empty", WC_CHECK_BOOL, &e) != WC_OK
+        || read_dim(c, o, "dim", &Q->dim) != WC_OK
+        || read_dim(c, o, "lineality_dim", &Q->lin) != WC_OK
+        || read_vectors(c, o, "inequalities", &Q->ineq, &Q->nineq) != WC_OK
+        || read_vectors(c, o, "equalities", &Q->eq, &Q->neq) != WC_OK
+        || read_vectors(c, o, "rays", &Q->rays, &Q->nrays) != WC_OK
+        || read_vectors(c, o, "lines", &Q->lines, &Q->nlines) != WC_OK
+        || _wc_check_member(c, o, "faces", WC_CHECK_ARRAY, &a) != WC_OK)
+        return c->status;
+    if (e->type == WC_JSON_TRUE)
+        return _wc_check_bad(c, e, "a piece of a set is never empty");
+    return read_piece_faces(c, Q, a);
+}
+
+int
+_wc_check_read_claim(wc_check_reader * c, wc_check_claim * C,
+                     const wc_json_node * root, const char * key)
+{
+    const wc_json_node * o, * a, * v;
+    size_t k;
+
+    if (_wc_check_member(c, root, key, WC_CHECK_OBJECT, &o) != WC_OK)
+        return WC_EINPUT;
+    C->at = o;
+    if (_wc_check_member(c, o, "empty", WC_CHECK_BOOL, &v) != WC_OK)
+        return WC_EINPUT;
+    C->empty = v->type == WC_JSON_TRUE;
+    if (_wc_check_member(c, o, "interior", WC_CHECK_BOOL, &v) != WC_OK)
+        return WC_EINPUT;
+    C->interior = v->type == WC_JSON_TRUE;
+    if (_wc_check_member(c, o, "pieces", WC_CHECK_ARRAY, &a) != WC_OK)
+        return WC_EINPUT;
+    C->pc = _wc_check_alloc(a->len, sizeof(wc_check_piece));
+    if (C->pc == NULL)
+        return _wc_check_nomem(c);
+    memset(C->pc, 0, (a->len > 0 ? a->len : 1) * sizeof(wc_check_piece));
+    C->npieces = a->len;
+    for (k = 0; k < a->len; k++)
+        if (read_piece(c, C->pc + k, a->items + k) != WC_OK)
+            return c->status;
+    return WC_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* Consistency.                                                        */
+
+/* The rank of the n vectors v (3 each); w (3), d, t scratch.  */
+static int
+rank3(mpq_t * v, size_t n, mpq_t * w, mpq_t d, mpq_t t)
+{
+    size_t i, first = n, second = n;
+
+    for (i = 0; i < n && first == n; i++)
+        if (!_wc_check_qvec_is_zero(v + 3 * i, 3))
+            first = i;
+    if (first == n)
+        return 0;
+    for (i = first + 1; i < n && second == n; i++)
+    {
+        _wc_check_qcross3(w, v + 3 * first, v + 3 * i, t);
+        if (!_wc_check_qvec_is_zero(w, 3))
+            second = i;
+    }
+    if (second == n)
+        return 1;
+    _wc_check_qcross3(w, v + 3 * first, v + 3 * second, t);
+    for (i = 0; i < n; i++)
+    {
+        _wc_check_qdot3(d, w, v + 3 * i, t);
+        if (mpq_sgn(d) != 0)
+            return 3;
+    }
+    return 2;
+}
+
+/* Scratch of the consistency checks.  */
+typedef struct
+{
+    mpq_t * w;          /* 3 */
+    mpq_t * v;          /* 3 (the most rays + lines of a face or piece) */
+    size_t cap;
+    mpq_t d, t;
+    mpz_t * z;          /* 3 */
+    mpz_t g;
+}
+claim_scratch;
+
+/* The primitive integer normal of the plane a . x = 0 with its first
+   nonzero entry positive, into X->z; 0 when a is zero.  */
+static int
+plane_of(claim_scratch * X, mpq_t * a)
+{
+    int j;
+
+    mpz_set_ui(X->g, 1);
+    for (j = 0; j < 3; j++)
+        mpz_lcm(X->g, X->g, mpq_denref(a[j]));
+    for (j = 0; j < 3; j++)
+    {
+        mpz_divexact(X->z[j], X->g, mpq_denref(a[j]));
+        mpz_mul(X->z[j], X->z[j], mpq_numref(a[j]));
+    }
+    mpz_set_ui(X->g, 0);
+    for (j = 0; j < 3; j++)
+        mpz_gcd(X->g, X->g, X->z[j]);
+    if (mpz_sgn(X->g) == 0)
+        return 0;
+    for (j = 0; j < 3; j++)
+        mpz_divexact(X->z[j], X->z[j], X->g);
+    for (j = 0; j < 3 && mpz_sgn(X->z[j]) == 0; j++)
+        ;
+    if (mpz_sgn(X->z[j]) < 0)
+        for (j = 0; j < 3; j++)
+            mpz_neg(X->z[j], X->z[j]);
+    return 1;
+}
+
+int
+_wc_check_zcmp3(mpz_t * a, mpz_t * b)
+{
+    int j, d;
+
+    for (j = 0; j < 3; j++)
+        if ((d = mpz_cmp(a[j], b[j])) != 0)
+            return d < 0 ? -1 : 1;
+    return 0;
+}
+
+/* The plane of a is one of the nplanes sorted planes H.  */
+static int
+among_planes(claim_scratch * X, mpq_t * a, mpz_t * H, size_t nplanes)
+{
+    size_t lo = 0, hi = nplanes;
+
+    if (!plane_of(X, a))
+        return 0;
+    while (lo < hi)
+    {
+        size_t mid = lo + (hi - lo) / 2;
+        int d = _wc_check_zcmp3(X->z, H + 3 * mid);
+
+        if (d == 0)
+            return 1;
+        if (d < 0)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return 0;
+}
+
+/* "piece 2: " then the message.  */
+static void
+piece_says(wc_check_text * why, size_t k)
+{
+    _wc_check_putf(why, "the claimed set's piece %lu ", (unsigned long) k + 1);
+}
+
+/* Every constraint of piece k a plane of H, every ray in its closure,
+   every line on every constraint.  1 or 0.  */
+static int
+piece_vectors(wc_check_text * why, claim_scratch * X,
+              const wc_check_piece * Q, size_t k, mpz_t * H, size_t np)
+{
+    size_t i, j;
+
+    for (i = 0; i < Q->nineq + Q->neq; i++)
+    {
+        mpq_t * a = i < Q->nineq ? Q->ineq + 3 * i
+            : Q->eq + 3 * (i - Q->nineq);
+
+        if (!among_planes(X, a, H, np))
+        {
+            piece_says(why, k);
+            _wc_check_put(why, "has the constraint ");
+            _wc_check_put_qvec(why, a, 3);
+            _wc_check_put(why, ", whose plane is not among the planes");
+            return 0;
+        }
+    }
+    for (i = 0; i < Q->nrays + Q->nlines; i++)
+    {
+        int line = i >= Q->nrays;
+        mpq_t * r = line ? Q->lines + 3 * (i - Q->nrays) : Q->rays + 3 * i;
+
+        for (j = 0; j < Q->nineq + Q->neq; j++)
+        {
+            int eq = j >= Q->nineq, sg;
+
+            _wc_check_qdot3(X->d, eq ? Q->eq + 3 * (j - Q->nineq)
+                            : Q->ineq + 3 * j, r, X->t);
+            sg = mpq_sgn(X->d);
+            if (sg < 0 || (sg > 0 && (eq || line)))
+            {
+                piece_says(why, k);
+                _wc_check_putf(why, "has the %s ", line ? "line" : "ray");
+                _wc_check_put_qvec(why, r, 3);
+                _wc_check_putf(why, " off its %s %lu",
+                               eq ? "equality" : "inequality",
+                               (unsigned long) (eq ? j - Q->nineq : j) + 1);
+                return 0;
+            }
+        }
+        if (_wc_check_qvec_is_zero(r, 3))
+        {
+            piece_says(why, k);
+            _wc_check_putf(why, "has a zero %s", line ? "line" : "ray");
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Copy the vectors a (na) and b (nb) into X->v (grown); NULL when out of
+   memory.  */
+static mpq_t *
+gather(claim_scratch * X, mpq_t * a, size_t na, mpq_t * b, size_t nb)
+{
+    size_t i, n = na + nb;
+
+    if (n > X->cap)
+    {
+        mpq_t * v = _wc_check_qvec_new(_wc_check_times(3, n));
+
+        if (v == NULL)
+            return NULL;
+        _wc_check_qvec_free(X->v, 3 * X->cap);
+        X->v = v;
+        X->cap = n;
+    }
+    for (i = 0; i < 3 * na; i++)
+        mpq_set(X->v[i], a[i]);
+    for (i = 0; i < 3 * nb; i++)
+        mpq_set(X->v[3 * na + i], b[i]);
+    return X->v;
+}
+
+/* The lines span the lineality space of the closure, its dim and
+   lineality_dim are as stated, and each face's tight set (the
+   inequalities vanishing on the sum of its rays) is recorded, with its
+   stated dim.  1, 0 or -1.  */
+static int
+piece_spaces(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
+             size_t k)
+{
+    size_t f, i, a, r;
+    mpq_t * v;
+    int rk;
+
+    if ((v = gather(X, Q->ineq, Q->nineq, Q->eq, Q->neq)) == NULL)
+        return -1;
+    rk = rank3(v, Q->nineq + Q->neq, X->w, X->d, X->t);
+    if ((v = gather(X, Q->lines, Q->nlines, NULL, 0)) == NULL)
+        return -1;
+    if ((size_t) (3 - rk) != Q->nlines
+        || rank3(v, Q->nlines, X->w, X->d, X->t) != (int) Q->nlines
+        || Q->lin != (long) Q->nlines)
+    {
+        piece_says(why, k);
+        _wc_check_putf(why, "has %lu line%s (lineality_dim %ld), but its "
+                       "constraints leave a lineality space of dimension %d",
+                       (unsigned long) Q->nlines, Q->nlines == 1 ? "" : "s",
+                       Q->lin, 3 - rk);
+        return 0;
+    }
+    if ((v = gather(X, Q->rays, Q->nrays, Q->lines, Q->nlines)) == NULL)
+        return -1;
+    if ((rk = rank3(v, Q->nrays + Q->nlines, X->w, X->d, X->t)) != Q->dim)
+    {
+        piece_says(why, k);
+        _wc_check_putf(why, "has dim %ld, but its rays and lines span %d",
+                       Q->dim, rk);
+        return 0;
+    }
+    Q->ftight = _wc_check_alloc(_wc_check_times(Q->nfaces, Q->nineq), 1);
+    if (Q->ftight == NULL)
+        return -1;
+    for (f = 0; f < Q->nfaces; f++)
+    {
+        size_t nr = Q->foff[f + 1] - Q->foff[f];
+
+        if ((v = gather(X, Q->lines, Q->nlines, NULL, nr)) == NULL)
+            return -1;
+        for (r = 0; r < nr; r++)
+            for (i = 0; i < 3; i++)
+                mpq_set(v[3 * (Q->nlines + r) + i],
+                        Q->rays[3 * Q->fray[Q->foff[f] + r] + i]);
+        rk = rank3(v, Q->nlines + nr, X->w, X->d, X->t);
+        if (rk != Q->fdim[f])
+        {
+            piece_says(why, k);
+            _wc_check_putf(why, "has face %lu of dim %ld, but its rays and "
+                           "the lines span %d", (unsigned long) f + 1,
+                           Q->fdim[f], rk);
+            return 0;
+        }
+        for (i = 0; i < 3; i++)
+            mpq_set_ui(X->w[i], 0, 1);
+        for (r = 0; r < nr; r++)
+            for (i = 0; i < 3; i++)
+                mpq_add(X->w[i], X->w[i],
+                        Q->rays[3 * Q->fray[Q->foff[f] + r] + i]);
+        for (a = 0; a < Q->nineq; a++)
+        {
+            _wc_check_qdot3(X->d, Q->ineq + 3 * a, X->w, X->t);
+            Q->ftight[f * Q->nineq + a] = mpq_sgn(X->d) == 0;
+        }
+    }
+    return 1;
+}
+
+int
+_wc_check_claim_valid(wc_check_text * why, wc_check_claim * C, mpz_t * H,
+                      size_t nplanes)
+{
+    claim_scratch X;
+    size_t k;
+    int holds = 1, interior = 0;
+
+    memset(&X, 0, sizeof X);
+    X.w = _wc_check_qvec_new(3);
+    X.z = _wc_check_zvec_new(3);
+    mpq_init(X.d);
+    mpq_init(X.t);
+    mpz_init(X.g);
+    if (X.w == NULL || X.z == NULL)
+        holds = -1;
+    if (holds == 1 && C->empty != (C->npieces == 0))
+    {
+        _wc_check_putf(why, "the claimed set says empty is %s with %lu "
+                       "piece%s", C->empty ? "true" : "false",
+                       (unsigned long) C->npieces,
+                       C->npieces == 1 ? "" : "s");
+        holds = 0;
+    }
+    for (k = 0; holds == 1 && k < C->npieces; k++)
+    {
+        holds = piece_vectors(why, &X, C->pc + k, k, H, nplanes);
+        if (holds == 1)
+            holds = piece_spaces(why, &X, C->pc + k, k);
+        interior |= C->pc[k].dim == 3;
+    }
+    if (holds == 1 && interior != C->interior)
+    {
+        _wc_check_putf(why, "the claimed set says interior is %s, but %s "
+                       "piece has dimension 3", C->interior ? "true"
+                       : "false", interior ? "a" : "no");
+        holds = 0;
+    }
+    _wc_check_qvec_free(X.w, 3);
+    _wc_check_qvec_free(X.v, 3 * X.cap);
+    _wc_check_zvec_free(X.z, 3);
+    mpq_clear(X.d);
+    mpq_clear(X.t);
+    mpz_clear(X.g);
+    return holds;
+}
+
+int
+_wc_check_claim_locate(const wc_check_claim * C, mpq_t * x, mpq_t d,
+                       mpq_t t, size_t * bad)
+{
+    size_t k, a, f, hits = 0;
+
+    for (k = 0; k < C->npieces; k++)
+    {
+        const wc_check_piece * Q = C->pc + k;
+        size_t match = Q->nfaces, count = 0;
+        int in = 1;
+
+        for (a = 0; a < Q->neq && in; a++)
+        {
+            _wc_check_qdot3(d, Q->eq + 3 * a, x, t);
+            in = mpq_sgn(d) == 0;
+        }
+        for (a = 0; a < Q->nineq && in; a++)
+        {
+            _wc_check_qdot3(d, Q->ineq + 3 * a, x, t);
+            in = mpq_sgn(d) >= 0;
+        }
+        if (!in)
+            continue;
+        for (f = 0; f < Q->nfaces; f++)
+        {
+            for (a = 0; a < Q->nineq; a++)
+            {
+                _wc_check_qdot3(d, Q->ineq + 3 * a, x, t);
+                if ((mpq_sgn(d) == 0) != Q->ftight[f * Q->nineq + a])
+                    break;
+            }
+            if (a == Q->nineq)
+            {
+                match = f;
+                count++;
+            }
+        }
+        if (count != 1)
+        {
+            *bad = k;
+            return -1;
+        }
+        hits += Q->fincl[match];
+    }
+    return (int) (hits > 2 ? 2 : hits);
+}
