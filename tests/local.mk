@@ -22,6 +22,7 @@ C_TESTS = \
 	tests/t-modes \
 	tests/t-verify \
 	tests/t-faces \
+	tests/t-checkcells \
 	tests/t-random \
 	tests/t-double \
 	tests/t-compare \

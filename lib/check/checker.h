@@ -269,6 +269,38 @@ void _wc_check_cone_clear(wc_check_cone * K);
 int _wc_check_cone_cut(wc_check_cone * K, mpz_t * h);
 
 /* ------------------------------------------------------------------ */
+/* The cells of the central arrangement of nplanes planes h . x = 0
+   (arrcells.c).                                                       */
+
+/* The cells are the relatively open cones of constant sign vector: the
+   origin (dim 0), open rays (1), open sectors (2), open chambers (3),
+   each once, sorted by dim, then by sign vector entry by entry in plane
+   order (- < 0 < +).  The rays of a cell are the 1-dim cells in its
+   closure, as increasing indices into this same array: none for the
+   origin, itself for a ray, the two bounding rays of a sector, the
+   extreme rays of a chamber.  The point of a ray is its primitive
+   direction.  */
+typedef struct
+{
+    size_t nplanes;
+    size_t count;           /* cells */
+    mpz_t * point;          /* 3 count: a primitive integer point in each cell (0 for the origin) */
+    unsigned char * dim;    /* count: 0, 1, 2, 3 */
+    signed char * sign;     /* count * nplanes, row-major: sign(h_p . point_i) in {-1,0,1} */
+    size_t * rayoff;        /* count + 1 */
+    size_t * ray;           /* the rays of cell i: ray[rayoff[i] .. rayoff[i+1]) */
+    unsigned long work;     /* dot and cross products computed (cost) */
+}
+wc_check_cells;
+
+void _wc_check_cells_init(wc_check_cells * A);   /* all empty */
+void _wc_check_cells_clear(wc_check_cells * A);
+/* A := the cells of the planes H[3p .. 3p+3), p < nplanes (nonzero integer vectors,
+   pairwise non-parallel, among them the three coordinate planes (1,0,0), (0,1,0),
+   (0,0,1), so every cell is pointed).  WC_OK, or WC_EINTERNAL when out of memory. */
+int _wc_check_cells_build(wc_check_cells * A, mpz_t * H, size_t nplanes);
+
+/* ------------------------------------------------------------------ */
 /* The moving faces (faces.c).                                         */
 
 /* A set of strings of n + 1 bytes each, malloc'd; all zero when empty.

@@ -15,6 +15,7 @@ lib_libwccheck_la_SOURCES += \
 	lib/check/problem.c \
 	lib/check/feasible.c \
 	lib/check/cone.c \
+	lib/check/arrcells.c \
 	lib/check/faces.c \
 	lib/check/stabread.c \
 	lib/check/stabcheck.c \
