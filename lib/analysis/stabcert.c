@@ -1,5 +1,5 @@
-/* stabcert.c -- the proof, cell by cell, that a strong stability set is
-   exact.
+/* stabcert.c -- the proof that a strong stability set is exact: its
+   pieces' included faces one by one, and every cell of its arrangement.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -7,8 +7,8 @@
 
    See stabcert.h.  Every proof comes from an exact LP (facesys.c,
    exact/lp.c) and is checked there against its rows; an LP that contradicts
-   the set (a motion for a cell in it, none for a cell outside it) means a
-   wrong set, reported as an internal error rather than written.  */
+   the set (a motion in an included face, none for a cell outside the set)
+   means a wrong set, reported as an internal error rather than written.  */
 
 #include <config.h>
 
@@ -36,8 +36,8 @@ _wc_stabcert_init(_wc_stabcert * C, const wc_problem_t P,
     for (i = 0; i < S->nmoving; i++)
         if (S->moving_rot[i] != 2)
             C->face[C->nfaces++] = i;
-    C->G = NULL;
-    C->gcap = 0;
+    C->G = C->F = NULL;
+    C->gcap = C->fcap = 0;
     if (wc_cells_rays(&C->off, &C->ray, S->cells, err) != WC_OK)
         return WC_EINTERNAL;
     for (i = 0; i < S->cells->count; i++)
@@ -45,6 +45,17 @@ _wc_stabcert_init(_wc_stabcert * C, const wc_problem_t P,
             most = C->off[i + 1] - C->off[i];
     C->gcap = most + 1;
     C->G = _fmpq_vec_init(3 * C->gcap);
+    most = 1;
+    for (i = 0; i < S->strong->npieces + S->nmoving; i++)
+    {
+        const wc_cone_struct * Q = i < S->strong->npieces
+            ? S->strong->pieces + i : S->moving + (i - S->strong->npieces);
+        slong g = fmpz_mat_nrows(Q->rays) + 2 * fmpz_mat_nrows(Q->lines);
+
+        most = g > most ? g : most;
+    }
+    C->fcap = most;
+    C->F = _fmpq_vec_init(3 * C->fcap);
     return WC_OK;
 }
 
@@ -57,57 +68,8 @@ _wc_stabcert_clear(_wc_stabcert * C)
     flint_free(C->face);
     if (C->G != NULL)
         _fmpq_vec_clear(C->G, 3 * C->gcap);
-}
-
-void
-_wc_cell_proof_init(_wc_cell_proof * pf, const _wc_stabcert * C)
-{
-    slong k, n = C->m.n;
-
-    pf->reason = WC_CELL_STRONG;
-    pf->weak = 0;
-    pf->weak_c = _fmpq_vec_init(2 * n + 1);
-    for (k = 0; k < 3; k++)
-        fmpq_init(pf->sep + k);
-    pf->face = -1;
-    pf->nrays = 0;
-    pf->closure = flint_malloc(sizeof(wc_motion_struct) * C->gcap);
-    for (k = 0; k < C->gcap; k++)
-        _wc_motion_init(pf->closure + k, n);
-    _wc_motion_init(&pf->motion, n);
-    pf->mult = flint_calloc(C->nfaces + 1, sizeof(fmpq *));
-    pf->nmult = flint_calloc(C->nfaces + 1, sizeof(slong));
-}
-
-static void
-drop_mult(_wc_cell_proof * pf, const _wc_stabcert * C)
-{
-    slong j;
-
-    for (j = 0; j < C->nfaces; j++)
-        if (pf->mult[j] != NULL)
-        {
-            _fmpq_vec_clear(pf->mult[j], pf->nmult[j]);
-            pf->mult[j] = NULL;
-            pf->nmult[j] = 0;
-        }
-}
-
-void
-_wc_cell_proof_clear(_wc_cell_proof * pf, const _wc_stabcert * C)
-{
-    slong k, n = C->m.n;
-
-    drop_mult(pf, C);
-    flint_free(pf->mult);
-    flint_free(pf->nmult);
-    _fmpq_vec_clear(pf->weak_c, 2 * n + 1);
-    for (k = 0; k < 3; k++)
-        fmpq_clear(pf->sep + k);
-    for (k = 0; k < C->gcap; k++)
-        _wc_motion_clear(pf->closure + k, n);
-    flint_free(pf->closure);
-    _wc_motion_clear(&pf->motion, n);
+    if (C->F != NULL)
+        _fmpq_vec_clear(C->F, 3 * C->fcap);
 }
 
 static int
@@ -117,40 +79,283 @@ bug(wc_error_t err, const char * what)
                         "the strong stability set %s", what);
 }
 
-/* A cell outside the set but weakly stable: the first moving face whose
-   cone holds its point, with the motions.  */
+slong
+_wc_stabcert_generators(_wc_stabcert * C, const wc_cone_struct * Q,
+                        slong f)
+{
+    slong j, l, g = 0, nr = f < 0 ? fmpz_mat_nrows(Q->rays)
+        : Q->faces[f].nrays;
+
+    for (j = 0; j < nr; j++, g++)
+        _fmpq_vec_set_fmpz_vec(C->F + 3 * g, WC_ROW(Q->rays,
+                               f < 0 ? j : Q->faces[f].rays[j]), 3);
+    for (l = 0; l < fmpz_mat_nrows(Q->lines); l++, g += 2)
+    {
+        _fmpq_vec_set_fmpz_vec(C->F + 3 * g, WC_ROW(Q->lines, l), 3);
+        for (j = 0; j < 3; j++)
+            fmpq_neg(C->F + 3 * (g + 1) + j, C->F + 3 * g + j);
+    }
+    return g;
+}
+
+/* ---------------------------------------------------------------------
+   The pieces.  */
+
+void
+_wc_piece_proof_clear(_wc_piece_proof * pp, const _wc_stabcert * C)
+{
+    slong f, j;
+
+    if (pp->c != NULL)
+        _fmpq_vec_clear(pp->c, pp->ngen * 2 * C->m.n + 1);
+    for (f = 0; pp->mult != NULL && f < pp->nfaces; f++)
+    {
+        for (j = 0; pp->mult[f] != NULL && j < C->nfaces; j++)
+            if (pp->mult[f][j] != NULL)
+                _fmpq_vec_clear(pp->mult[f][j], pp->nmult[f][j]);
+        flint_free(pp->mult[f]);
+        flint_free(pp->nmult[f]);
+    }
+    flint_free(pp->mult);
+    flint_free(pp->nmult);
+}
+
+/* The multipliers of every moving face for the included face f.  */
 static int
-prove_moves(_wc_cell_proof * pf, _wc_stabcert * C, const fmpq * sum,
-            wc_error_t err)
+prove_face(_wc_piece_proof * pp, _wc_stabcert * C, slong k, slong f,
+           wc_error_t err)
 {
     const wc_stability_struct * S = C->S;
-    slong j, k;
+    slong j, y, ng = _wc_stabcert_generators(C, S->strong->pieces + k, f);
     int r;
 
-    pf->reason = WC_CELL_MOVES;
+    pp->mult[f] = flint_calloc(C->nfaces + 1, sizeof(fmpq *));
+    pp->nmult[f] = flint_calloc(C->nfaces + 1, sizeof(slong));
     for (j = 0; j < C->nfaces; j++)
-        if (wc_cone_contains(S->moving + C->face[j], sum))
-            break;
-    if (j == C->nfaces)
-        return bug(err, "leaves out a strongly stable cell");
-    pf->face = j;
-    j = C->face[j];
-    for (k = 0; k < pf->nrays; k++)
     {
-        r = _wc_face_solve_cone(pf->closure[k].nudot, pf->closure[k].c, NULL,
-                                NULL, &C->m, S->moving_sign[j],
-                                S->moving_sign[j], S->moving_rot[j],
-                                C->G + 3 * k, 1, 1, err);
-        if (r != 1)
-            return r < 0 ? WC_EINTERNAL : bug(err, "has a cell outside "
-                                              "a moving cone's closure");
+        y = C->face[j];
+        r = _wc_face_solve_cone(NULL, NULL, pp->mult[f] + j,
+                                pp->nmult[f] + j, &C->m, S->moving_sign[y],
+                                S->moving_sign[y], S->moving_rot[y], C->F,
+                                ng, 0, err);
+        if (r != 0)
+            return r < 0 ? WC_EINTERNAL : bug(err, "holds wrenches that "
+                                              "move");
     }
-    r = _wc_face_solve_cone(pf->motion.nudot, pf->motion.c, NULL, NULL,
-                            &C->m, S->moving_sign[j], S->moving_sign[j],
-                            S->moving_rot[j], sum, 1, 0, err);
+    return WC_OK;
+}
+
+int
+_wc_stabcert_piece(_wc_piece_proof * pp, _wc_stabcert * C, slong k,
+                   wc_error_t err)
+{
+    const wc_cone_struct * Q = C->S->strong->pieces + k;
+    slong n2 = 2 * C->m.n, g, f, j;
+    fmpq sep[3];
+    int status = WC_OK, r;
+
+    pp->ngen = _wc_stabcert_generators(C, Q, -1);
+    pp->c = _fmpq_vec_init(pp->ngen * n2 + 1);
+    pp->nfaces = Q->nfaces;
+    pp->mult = flint_calloc(Q->nfaces + 1, sizeof(fmpq **));
+    pp->nmult = flint_calloc(Q->nfaces + 1, sizeof(slong *));
+    for (j = 0; j < 3; j++)
+        fmpq_init(sep + j);
+    for (g = 0; g < pp->ngen && status == WC_OK; g++)
+    {
+        r = _wc_stab_weak(pp->c + g * n2, sep, &C->m, C->F + 3 * g, err);
+        if (r != 1)
+            status = r < 0 ? WC_EINTERNAL : bug(err, "has a piece that is "
+                                                "not weakly stable");
+    }
+    for (f = 0; f < Q->nfaces && status == WC_OK; f++)
+        if (Q->faces[f].included)
+            status = prove_face(pp, C, k, f, err);
+    for (j = 0; j < 3; j++)
+        fmpq_clear(sep + j);
+    return status;
+}
+
+/* ---------------------------------------------------------------------
+   The moving cones.  */
+
+void
+_wc_cone_proof_clear(_wc_cone_proof * cp, const _wc_stabcert * C)
+{
+    slong k;
+
+    for (k = 0; cp->closure != NULL && k < cp->ngen; k++)
+        _wc_motion_clear(cp->closure + k, C->m.n);
+    for (k = 0; cp->motion != NULL && k < cp->nfaces; k++)
+        _wc_motion_clear(cp->motion + k, C->m.n);
+    flint_free(cp->closure);
+    flint_free(cp->motion);
+    flint_free(cp->included);
+}
+
+/* A motion of face y (of its closure when closed) for the wrench g.  */
+static int
+face_motion(wc_motion_struct * a, _wc_stabcert * C, slong y,
+            const fmpq * g, int closed, wc_error_t err)
+{
+    const wc_stability_struct * S = C->S;
+    int r = _wc_face_solve_cone(a->nudot, a->c, NULL, NULL, &C->m,
+                                S->moving_sign[y], S->moving_sign[y],
+                                S->moving_rot[y], g, 1, closed, err);
+
     if (r != 1)
-        return r < 0 ? WC_EINTERNAL : bug(err, "has a cell outside the "
-                                          "moving cone that holds it");
+        return r < 0 ? WC_EINTERNAL : bug(err, "has a moving cone that "
+                                          "does not move");
+    return WC_OK;
+}
+
+int
+_wc_stabcert_cone(_wc_cone_proof * cp, _wc_stabcert * C, slong j,
+                  wc_error_t err)
+{
+    slong y = C->face[j], g, f, k;
+    const wc_cone_struct * Q = C->S->moving + y;
+    fmpq sum[3];
+    int status = WC_OK;
+
+    cp->ngen = _wc_stabcert_generators(C, Q, -1);
+    cp->nfaces = Q->nfaces;
+    cp->closure = flint_malloc(sizeof(wc_motion_struct) * (cp->ngen + 1));
+    cp->motion = flint_malloc(sizeof(wc_motion_struct) * (cp->nfaces + 1));
+    cp->included = flint_calloc(cp->nfaces + 1, sizeof(int));
+    for (g = 0; g < cp->ngen; g++)
+        _wc_motion_init(cp->closure + g, C->m.n);
+    for (f = 0; f < cp->nfaces; f++)
+        _wc_motion_init(cp->motion + f, C->m.n);
+    for (g = 0; g < cp->ngen && status == WC_OK; g++)
+        status = face_motion(cp->closure + g, C, y, C->F + 3 * g, 1, err);
+    for (k = 0; k < 3; k++)
+        fmpq_init(sum + k);
+    for (f = 0; f < cp->nfaces && status == WC_OK; f++)
+    {
+        slong ng;
+
+        if (!(cp->included[f] = Q->faces[f].included))
+            continue;
+        ng = _wc_stabcert_generators(C, Q, f);
+        for (k = 0; k < 3; k++)
+            fmpq_zero(sum + k);
+        for (g = 0; g < ng; g++)
+            for (k = 0; k < 3; k++)
+                fmpq_add(sum + k, sum + k, C->F + 3 * g + k);
+        status = face_motion(cp->motion + f, C, y, sum, 0, err);
+    }
+    for (k = 0; k < 3; k++)
+        fmpq_clear(sum + k);
+    return status;
+}
+
+/* ---------------------------------------------------------------------
+   The cells.  */
+
+void
+_wc_cell_proof_init(_wc_cell_proof * pf, const _wc_stabcert * C)
+{
+    slong k;
+
+    pf->reason = WC_CELL_STRONG;
+    for (k = 0; k < 3; k++)
+        fmpq_init(pf->sep + k);
+    pf->owner = pf->face = -1;
+    pf->nrays = 0;
+    pf->ngen = 0;
+    pf->alpha = _fmpq_vec_init(C->fcap);
+    pf->beta = _fmpq_vec_init(C->gcap * C->fcap);
+}
+
+void
+_wc_cell_proof_clear(_wc_cell_proof * pf, const _wc_stabcert * C)
+{
+    slong k;
+
+    for (k = 0; k < 3; k++)
+        fmpq_clear(pf->sep + k);
+    _fmpq_vec_clear(pf->alpha, C->fcap);
+    _fmpq_vec_clear(pf->beta, C->gcap * C->fcap);
+}
+
+/* alpha (ng) with every entry > 0 and sum alpha_i F_i = x, x known to lie
+   in relint pos(F): x - t s is in pos(F) for s = sum F_i and some t > 0,
+   found by halving t from 1 (a 3-D simplex each, exact/lp.h), and then
+   alpha = (its coefficients) + t.  1, or -1 on failure.  */
+static int
+strictly_inside(fmpq * alpha, const fmpq * F, slong ng, const fmpq * x,
+                wc_error_t err)
+{
+    fmpq y[3], s[3], sep[3];
+    fmpq_t t;
+    slong i, k, tries;
+    int r = 0;
+
+    fmpq_init(t);
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_init(y + k);
+        fmpq_init(s + k);
+        fmpq_init(sep + k);
+        for (i = 0; i < ng; i++)
+            fmpq_add(s + k, s + k, F + 3 * i + k);
+    }
+    fmpq_one(t);
+    for (tries = 0; tries < 200 && r == 0; tries++)
+    {
+        for (k = 0; k < 3; k++)
+        {
+            fmpq_mul(y + k, t, s + k);
+            fmpq_sub(y + k, x + k, y + k);
+        }
+        r = _wc_lp_cone3(alpha, sep, F, ng, y, err);
+        if (r == 0)
+            fmpq_div_2exp(t, t, 1);
+    }
+    for (i = 0; r == 1 && i < ng; i++)
+        fmpq_add(alpha + i, alpha + i, t);
+    if (r == 0)
+    {
+        wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "internal error: a "
+                     "cell's point is not inside its face");
+        r = -1;
+    }
+    fmpq_clear(t);
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_clear(y + k);
+        fmpq_clear(s + k);
+        fmpq_clear(sep + k);
+    }
+    return r;
+}
+
+/* A cell in the included face of Q (owner) that holds its sum.  */
+static int
+prove_located(_wc_cell_proof * pf, _wc_stabcert * C,
+              const wc_cone_struct * Q, slong owner, const fmpq * sum,
+              wc_error_t err)
+{
+    fmpq sep[3];
+    slong f = wc_cone_locate(Q, sum), j;
+    int r;
+
+    if (f < 0 || !Q->faces[f].included)
+        return bug(err, "misses a cell");
+    pf->owner = owner;
+    pf->face = f;
+    pf->ngen = _wc_stabcert_generators(C, Q, f);
+    r = strictly_inside(pf->alpha, C->F, pf->ngen, sum, err);
+    for (j = 0; j < 3; j++)
+        fmpq_init(sep + j);
+    for (j = 0; r == 1 && j < pf->nrays; j++)
+        r = _wc_lp_cone3(pf->beta + j * pf->ngen, sep, C->F, pf->ngen,
+                         C->G + 3 * j, err);
+    for (j = 0; j < 3; j++)
+        fmpq_clear(sep + j);
+    if (r != 1)
+        return r < 0 ? WC_EINTERNAL : bug(err, "has a cell across a face");
     return WC_OK;
 }
 
@@ -198,65 +403,51 @@ prove_not_weak(_wc_cell_proof * pf, _wc_stabcert * C, const fmpq * sum,
     return WC_OK;
 }
 
-/* A cell in the set: no moving face has a motion anywhere in it.  */
-static int
-prove_strong(_wc_cell_proof * pf, _wc_stabcert * C, wc_error_t err)
-{
-    const wc_stability_struct * S = C->S;
-    slong j, f;
-    int r;
-
-    pf->reason = WC_CELL_STRONG;
-    for (j = 0; j < C->nfaces; j++)
-    {
-        f = C->face[j];
-        r = _wc_face_solve_cone(NULL, NULL, pf->mult + j, pf->nmult + j,
-                                &C->m, S->moving_sign[f], S->moving_sign[f],
-                                S->moving_rot[f], C->G, pf->nrays, 0, err);
-        if (r != 0)
-            return r < 0 ? WC_EINTERNAL : bug(err, "holds a cell that "
-                                              "moves");
-    }
-    return WC_OK;
-}
-
 int
 _wc_stabcert_cell(_wc_cell_proof * pf, _wc_stabcert * C, slong i,
                   wc_error_t err)
 {
     const wc_stability_struct * S = C->S;
     const wc_cells_struct * A = S->cells;
-    slong k, nr = C->off[i + 1] - C->off[i];
+    slong k, j, nr = C->off[i + 1] - C->off[i];
     fmpq sum[3];
-    int status = WC_OK, weak, in;
+    int status = WC_OK, weak = 1;
 
-    drop_mult(pf, C);
     pf->nrays = nr;
-    pf->face = -1;
-    pf->weak = 0;
+    pf->owner = pf->face = -1;
     for (k = 0; k < 3; k++)
         fmpq_init(sum + k);
     for (k = 0; k < nr; k++)
     {
         _fmpq_vec_set_fmpz_vec(C->G + 3 * k,
                                WC_ROW(A->point, C->ray[C->off[i] + k]), 3);
-        fmpq_add(sum + 0, sum + 0, C->G + 3 * k + 0);
-        fmpq_add(sum + 1, sum + 1, C->G + 3 * k + 1);
-        fmpq_add(sum + 2, sum + 2, C->G + 3 * k + 2);
+        for (j = 0; j < 3; j++)
+            fmpq_add(sum + j, sum + j, C->G + 3 * k + j);
     }
-    in = wc_set_contains(S->strong, sum);
-    weak = _wc_stab_weak(pf->weak_c, pf->sep, &C->m, sum, err);
-    if (weak < 0)
-        status = WC_EINTERNAL;
-    else if (A->dim[i] == 1)
-        pf->weak = weak;
-    if (status == WC_OK && !weak)
-        status = in ? bug(err, "holds a cell that is not weakly stable")
-            : prove_not_weak(pf, C, sum, err);
-    else if (status == WC_OK && in)
-        status = prove_strong(pf, C, err);
-    else if (status == WC_OK)
-        status = prove_moves(pf, C, sum, err);
+    for (k = 0; k < S->strong->npieces; k++)
+        if (wc_cone_contains(S->strong->pieces + k, sum))
+            break;
+    pf->reason = WC_CELL_STRONG;
+    if (k < S->strong->npieces)
+        status = prove_located(pf, C, S->strong->pieces + k, k, sum, err);
+    else
+    {
+        weak = _wc_stab_weak(NULL, pf->sep, &C->m, sum, err);
+        if (weak < 0)
+            status = WC_EINTERNAL;
+        else if (!weak)
+            status = prove_not_weak(pf, C, sum, err);
+        else
+        {
+            pf->reason = WC_CELL_MOVES;
+            for (j = 0; j < C->nfaces; j++)
+                if (wc_cone_contains(S->moving + C->face[j], sum))
+                    break;
+            status = j == C->nfaces ? bug(err, "leaves out a strongly "
+                                          "stable cell")
+                : prove_located(pf, C, S->moving + C->face[j], j, sum, err);
+        }
+    }
     for (k = 0; k < 3; k++)
         fmpq_clear(sum + k);
     return status;

@@ -441,9 +441,9 @@ int _wc_check_stability_certificate(wc_check_reader * c,
 
 #define WC_CHECK_KIND_SET "stability-set"
 
-/* One piece of a claimed set: the closure {a . x >= 0, e . x = 0}, its
-   rays and lines, its faces (rays, dim, included) and, once checked, each
-   face's tight inequalities.  */
+/* One piece of a claimed set (or a moving face's cone): the closure
+   {a . x <= 0, e . x = 0}, its rays and lines, its faces (rays, dim,
+   included).  */
 typedef struct
 {
     const wc_json_node * at;
@@ -452,7 +452,6 @@ typedef struct
     size_t * foff, * fray;      /* face f: rays fray[foff[f] .. foff[f+1]) */
     int * fincl;
     long * fdim;
-    unsigned char * ftight;     /* nfaces x nineq */
     long dim, lin;
 }
 wc_check_piece;
@@ -469,23 +468,18 @@ wc_check_claim;
 
 void _wc_check_claim_clear(wc_check_claim * C);
 
+/* A cone written as stability --format=json writes one, at o, into Q
+   (all zero before); _wc_check_piece_clear frees it.  */
+int _wc_check_read_piece(wc_check_reader * c, wc_check_piece * Q,
+                         const wc_json_node * o);
+void _wc_check_piece_clear(wc_check_piece * Q);
+
 /* root[key] into C (all zero before).  */
 int _wc_check_read_claim(wc_check_reader * c, wc_check_claim * C,
                          const wc_json_node * root, const char * key);
 
-/* C describes its pieces consistently, with every constraint on one of
-   the nplanes sorted planes H.  1, 0 (why written) or -1.  */
-int _wc_check_claim_valid(wc_check_text * why, wc_check_claim * C,
-                          mpz_t * H, size_t nplanes);
-
-/* How many pieces of C (checked valid) hold x: 0, 1 or 2 (two or more);
-   -1 when x is in the closure of piece *bad but in no listed face of it,
-   or in two.  d, t scratch.  */
-int _wc_check_claim_locate(const wc_check_claim * C, mpq_t * x, mpq_t d,
-                           mpq_t t, size_t * bad);
-
-/* -1, 0, 1 as a < b lexicographically.  */
-int _wc_check_zcmp3(mpz_t * a, mpz_t * b);
+/* C describes its pieces consistently.  1, 0 (why written) or -1.  */
+int _wc_check_claim_valid(wc_check_text * why, wc_check_claim * C);
 
 /* Check the stability-set certificate at root (its kind read).  */
 int _wc_check_set_certificate(wc_check_reader * c,

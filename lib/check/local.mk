@@ -19,7 +19,9 @@ lib_libwccheck_la_SOURCES += \
 	lib/check/faces.c \
 	lib/check/stabread.c \
 	lib/check/stabcheck.c \
-	lib/check/facecheck.c
+	lib/check/facecheck.c \
+	lib/check/setread.c \
+	lib/check/setcheck.c
 wccheckdir = $(pkgincludedir)/check
 wccheck_HEADERS = \
 	lib/check/verify.h

@@ -1,29 +1,27 @@
 /* setread.c -- the claimed set of a stability-set certificate: its
-   pieces, read, checked for consistency, and asked which holds a point.
+   pieces, read and checked for consistency.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
    A piece is a convex cone written as wrenchcone stability --format=json
-   writes it: the closure C = {x : a . x >= 0 (inequalities), e . x = 0
+   writes it: the closure C = {x : a . x <= 0 (inequalities), e . x = 0
    (equalities)}, its rays and lines, and its faces, each with the rays it
-   holds and whether the piece includes its relative interior.  The set
-   the checker certifies is read from the closure and the included faces:
-   x is in the piece when x is in C and the inequalities tight at x are
-   exactly those tight at the sum of an included face's rays.  The rays,
-   lines and faces are checked to describe C (setcheck.c's cells do the
-   rest): every ray in C, every line on every constraint, as many lines
-   as C's lineality space has dimensions and independent, and every point
-   of C in exactly one listed face.  */
+   holds and whether the piece includes its relative interior.  What the
+   certificate proves is read from the generators: the set is the union of
+   the included faces, each the relatively open cone of its rays and the
+   piece's lines.  The constraints are checked against them (every ray in
+   C, every line on every constraint, as many lines as C's lineality space
+   has dimensions), and so are the stated dimensions.  */
 
 #include <stdlib.h>
 #include <string.h>
 
 #include "check/checker.h"
 
-static void
-piece_clear(wc_check_piece * Q)
+void
+_wc_check_piece_clear(wc_check_piece * Q)
 {
     _wc_check_qvec_free(Q->ineq, 3 * Q->nineq);
     _wc_check_qvec_free(Q->eq, 3 * Q->neq);
@@ -33,7 +31,6 @@ piece_clear(wc_check_piece * Q)
     free(Q->fray);
     free(Q->fincl);
     free(Q->fdim);
-    free(Q->ftight);
 }
 
 void
@@ -43,7 +40,7 @@ _wc_check_claim_clear(wc_check_claim * C)
 
     if (C->pc != NULL)
         for (k = 0; k < C->npieces; k++)
-            piece_clear(C->pc + k);
+            _wc_check_piece_clear(C->pc + k);
     free(C->pc);
     memset(C, 0, sizeof *C);
 }
@@ -158,8 +155,9 @@ read_piece_faces(wc_check_reader * c, wc_check_piece * Q,
     return WC_OK;
 }
 
-static int
-read_piece(wc_check_reader * c, wc_check_piece * Q, const wc_json_node * o)
+int
+_wc_check_read_piece(wc_check_reader * c, wc_check_piece * Q,
+                     const wc_json_node * o)
 {
     const wc_json_node * a, * e;
 
@@ -197,13 +195,13 @@ _wc_check_read_claim(wc_check_reader * c, wc_check_claim * C,
     C->interior = v->type == WC_JSON_TRUE;
     if (_wc_check_member(c, o, "pieces", WC_CHECK_ARRAY, &a) != WC_OK)
         return WC_EINPUT;
-    C->pc = _wc_check_alloc(a->len, sizeof(wc_check_piece));
+    C->pc = _wc_check_alloc(a->len + 1, sizeof(wc_check_piece));
     if (C->pc == NULL)
         return _wc_check_nomem(c);
     memset(C->pc, 0, (a->len > 0 ? a->len : 1) * sizeof(wc_check_piece));
     C->npieces = a->len;
     for (k = 0; k < a->len; k++)
-        if (read_piece(c, C->pc + k, a->items + k) != WC_OK)
+        if (_wc_check_read_piece(c, C->pc + k, a->items + k) != WC_OK)
             return c->status;
     return WC_OK;
 }
@@ -252,70 +250,6 @@ typedef struct
 }
 claim_scratch;
 
-/* The primitive integer normal of the plane a . x = 0 with its first
-   nonzero entry positive, into X->z; 0 when a is zero.  */
-static int
-plane_of(claim_scratch * X, mpq_t * a)
-{
-    int j;
-
-    mpz_set_ui(X->g, 1);
-    for (j = 0; j < 3; j++)
-        mpz_lcm(X->g, X->g, mpq_denref(a[j]));
-    for (j = 0; j < 3; j++)
-    {
-        mpz_divexact(X->z[j], X->g, mpq_denref(a[j]));
-        mpz_mul(X->z[j], X->z[j], mpq_numref(a[j]));
-    }
-    mpz_set_ui(X->g, 0);
-    for (j = 0; j < 3; j++)
-        mpz_gcd(X->g, X->g, X->z[j]);
-    if (mpz_sgn(X->g) == 0)
-        return 0;
-    for (j = 0; j < 3; j++)
-        mpz_divexact(X->z[j], X->z[j], X->g);
-    for (j = 0; j < 3 && mpz_sgn(X->z[j]) == 0; j++)
-        ;
-    if (mpz_sgn(X->z[j]) < 0)
-        for (j = 0; j < 3; j++)
-            mpz_neg(X->z[j], X->z[j]);
-    return 1;
-}
-
-int
-_wc_check_zcmp3(mpz_t * a, mpz_t * b)
-{
-    int j, d;
-
-    for (j = 0; j < 3; j++)
-        if ((d = mpz_cmp(a[j], b[j])) != 0)
-            return d < 0 ? -1 : 1;
-    return 0;
-}
-
-/* The plane of a is one of the nplanes sorted planes H.  */
-static int
-among_planes(claim_scratch * X, mpq_t * a, mpz_t * H, size_t nplanes)
-{
-    size_t lo = 0, hi = nplanes;
-
-    if (!plane_of(X, a))
-        return 0;
-    while (lo < hi)
-    {
-        size_t mid = lo + (hi - lo) / 2;
-        int d = _wc_check_zcmp3(X->z, H + 3 * mid);
-
-        if (d == 0)
-            return 1;
-        if (d < 0)
-            hi = mid;
-        else
-            lo = mid + 1;
-    }
-    return 0;
-}
-
 /* "piece 2: " then the message.  */
 static void
 piece_says(wc_check_text * why, size_t k)
@@ -323,28 +257,14 @@ piece_says(wc_check_text * why, size_t k)
     _wc_check_putf(why, "the claimed set's piece %lu ", (unsigned long) k + 1);
 }
 
-/* Every constraint of piece k a plane of H, every ray in its closure,
-   every line on every constraint.  1 or 0.  */
+/* Every ray in the closure of piece k, every line on every constraint.
+   1 or 0.  */
 static int
 piece_vectors(wc_check_text * why, claim_scratch * X,
-              const wc_check_piece * Q, size_t k, mpz_t * H, size_t np)
+              const wc_check_piece * Q, size_t k)
 {
     size_t i, j;
 
-    for (i = 0; i < Q->nineq + Q->neq; i++)
-    {
-        mpq_t * a = i < Q->nineq ? Q->ineq + 3 * i
-            : Q->eq + 3 * (i - Q->nineq);
-
-        if (!among_planes(X, a, H, np))
-        {
-            piece_says(why, k);
-            _wc_check_put(why, "has the constraint ");
-            _wc_check_put_qvec(why, a, 3);
-            _wc_check_put(why, ", whose plane is not among the planes");
-            return 0;
-        }
-    }
     for (i = 0; i < Q->nrays + Q->nlines; i++)
     {
         int line = i >= Q->nrays;
@@ -357,7 +277,7 @@ piece_vectors(wc_check_text * why, claim_scratch * X,
             _wc_check_qdot3(X->d, eq ? Q->eq + 3 * (j - Q->nineq)
                             : Q->ineq + 3 * j, r, X->t);
             sg = mpq_sgn(X->d);
-            if (sg < 0 || (sg > 0 && (eq || line)))
+            if (sg > 0 || (sg < 0 && (eq || line)))
             {
                 piece_says(why, k);
                 _wc_check_putf(why, "has the %s ", line ? "line" : "ray");
@@ -378,8 +298,8 @@ piece_vectors(wc_check_text * why, claim_scratch * X,
     return 1;
 }
 
-/* Copy the vectors a (na) and b (nb) into X->v (grown); NULL when out of
-   memory.  */
+/* Copy the vectors a (na) and b (nb; NULL: only make room for them) into
+   X->v (grown); NULL when out of memory.  */
 static mpq_t *
 gather(claim_scratch * X, mpq_t * a, size_t na, mpq_t * b, size_t nb)
 {
@@ -397,20 +317,19 @@ gather(claim_scratch * X, mpq_t * a, size_t na, mpq_t * b, size_t nb)
     }
     for (i = 0; i < 3 * na; i++)
         mpq_set(X->v[i], a[i]);
-    for (i = 0; i < 3 * nb; i++)
+    for (i = 0; b != NULL && i < 3 * nb; i++)
         mpq_set(X->v[3 * na + i], b[i]);
     return X->v;
 }
 
-/* The lines span the lineality space of the closure, its dim and
-   lineality_dim are as stated, and each face's tight set (the
-   inequalities vanishing on the sum of its rays) is recorded, with its
-   stated dim.  1, 0 or -1.  */
+/* The lines span the lineality space of the closure, and the dim and
+   lineality_dim of the piece and the dim of each face are as stated.
+   1, 0 or -1.  */
 static int
 piece_spaces(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
              size_t k)
 {
-    size_t f, i, a, r;
+    size_t f, i, r;
     mpq_t * v;
     int rk;
 
@@ -439,9 +358,6 @@ piece_spaces(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
                        Q->dim, rk);
         return 0;
     }
-    Q->ftight = _wc_check_alloc(_wc_check_times(Q->nfaces, Q->nineq), 1);
-    if (Q->ftight == NULL)
-        return -1;
     for (f = 0; f < Q->nfaces; f++)
     {
         size_t nr = Q->foff[f + 1] - Q->foff[f];
@@ -461,24 +377,12 @@ piece_spaces(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
                            Q->fdim[f], rk);
             return 0;
         }
-        for (i = 0; i < 3; i++)
-            mpq_set_ui(X->w[i], 0, 1);
-        for (r = 0; r < nr; r++)
-            for (i = 0; i < 3; i++)
-                mpq_add(X->w[i], X->w[i],
-                        Q->rays[3 * Q->fray[Q->foff[f] + r] + i]);
-        for (a = 0; a < Q->nineq; a++)
-        {
-            _wc_check_qdot3(X->d, Q->ineq + 3 * a, X->w, X->t);
-            Q->ftight[f * Q->nineq + a] = mpq_sgn(X->d) == 0;
-        }
     }
     return 1;
 }
 
 int
-_wc_check_claim_valid(wc_check_text * why, wc_check_claim * C, mpz_t * H,
-                      size_t nplanes)
+_wc_check_claim_valid(wc_check_text * why, wc_check_claim * C)
 {
     claim_scratch X;
     size_t k;
@@ -502,7 +406,7 @@ _wc_check_claim_valid(wc_check_text * why, wc_check_claim * C, mpz_t * H,
     }
     for (k = 0; holds == 1 && k < C->npieces; k++)
     {
-        holds = piece_vectors(why, &X, C->pc + k, k, H, nplanes);
+        holds = piece_vectors(why, &X, C->pc + k, k);
         if (holds == 1)
             holds = piece_spaces(why, &X, C->pc + k, k);
         interior |= C->pc[k].dim == 3;
@@ -521,52 +425,4 @@ _wc_check_claim_valid(wc_check_text * why, wc_check_claim * C, mpz_t * H,
     mpq_clear(X.t);
     mpz_clear(X.g);
     return holds;
-}
-
-int
-_wc_check_claim_locate(const wc_check_claim * C, mpq_t * x, mpq_t d,
-                       mpq_t t, size_t * bad)
-{
-    size_t k, a, f, hits = 0;
-
-    for (k = 0; k < C->npieces; k++)
-    {
-        const wc_check_piece * Q = C->pc + k;
-        size_t match = Q->nfaces, count = 0;
-        int in = 1;
-
-        for (a = 0; a < Q->neq && in; a++)
-        {
-            _wc_check_qdot3(d, Q->eq + 3 * a, x, t);
-            in = mpq_sgn(d) == 0;
-        }
-        for (a = 0; a < Q->nineq && in; a++)
-        {
-            _wc_check_qdot3(d, Q->ineq + 3 * a, x, t);
-            in = mpq_sgn(d) >= 0;
-        }
-        if (!in)
-            continue;
-        for (f = 0; f < Q->nfaces; f++)
-        {
-            for (a = 0; a < Q->nineq; a++)
-            {
-                _wc_check_qdot3(d, Q->ineq + 3 * a, x, t);
-                if ((mpq_sgn(d) == 0) != Q->ftight[f * Q->nineq + a])
-                    break;
-            }
-            if (a == Q->nineq)
-            {
-                match = f;
-                count++;
-            }
-        }
-        if (count != 1)
-        {
-            *bad = k;
-            return -1;
-        }
-        hits += Q->fincl[match];
-    }
-    return (int) (hits > 2 ? 2 : hits);
 }

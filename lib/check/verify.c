@@ -69,7 +69,9 @@ wc_verify_certificate(int * holds, char ** reason, char ** mode,
     {
         status = _wc_check_bad(&c, _wc_json_object_get(&J->root, "kind"),
                                "expected a mode-feasibility certificate, "
-                               "found kind '%s'", WC_CHECK_KIND_STABILITY);
+                               "found kind '%s'", kind == WC_CHECK_SET
+                               ? WC_CHECK_KIND_SET
+                               : WC_CHECK_KIND_STABILITY);
         goto cleanup;
     }
     status = _wc_check_mode_certificate(&c, &J->root, &h, &why, &m, &feas);
@@ -121,9 +123,11 @@ wc_verify(int * holds, char ** reason, char ** summary, const char * text,
             _wc_check_putf(&what, "mode %s is %s", m, feas ? "feasible"
                            : "infeasible");
     }
-    else
+    else if (kind == WC_CHECK_STABILITY)
         status = _wc_check_stability_certificate(&c, &J->root, &h, &why,
                                                  &what);
+    else
+        status = _wc_check_set_certificate(&c, &J->root, &h, &why, &what);
     if (status != WC_OK)
         goto cleanup;
     if (what.oom || what.s == NULL)
