@@ -322,6 +322,121 @@ gather(claim_scratch * X, mpq_t * a, size_t na, mpq_t * b, size_t nb)
     return X->v;
 }
 
+/* v[k] := the constraint or generator j of Q: inequalities then
+   equalities; rays then lines.  */
+static mpq_t *
+constraint(const wc_check_piece * Q, size_t j)
+{
+    return j < Q->nineq ? Q->ineq + 3 * j : Q->eq + 3 * (j - Q->nineq);
+}
+
+static mpq_t *
+generator(const wc_check_piece * Q, size_t j)
+{
+    return j < Q->nrays ? Q->rays + 3 * j : Q->lines + 3 * (j - Q->nrays);
+}
+
+/* The two descriptions agree (the constraints and generators are each
+   valid for the other, checked before): every ray is extreme -- the
+   constraints tight on it have rank 2 - lineality_dim -- and every
+   inequality is a facet -- the generators on it span dim - 1.  In three
+   dimensions this makes each list complete: around the cone, each ray
+   lies on two listed facets and each facet holds two listed rays.
+   Then each face's rays are exactly the rays on the inequalities tight on
+   all of them.  1, 0 or -1.  */
+static int
+piece_incidence(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
+                size_t k)
+{
+    size_t i, j, n, m = Q->nineq + Q->neq, g = Q->nrays + Q->nlines, f;
+    mpq_t * v;
+    int rk;
+
+    if ((v = gather(X, NULL, 0, NULL, m > g ? m : g)) == NULL)
+        return -1;
+    for (i = 0; i < Q->nrays + Q->nineq; i++)
+    {
+        int ray = i < Q->nrays;
+        mpq_t * x = ray ? Q->rays + 3 * i : Q->ineq + 3 * (i - Q->nrays);
+
+        n = 0;
+        for (j = 0; j < (ray ? m : g); j++)
+        {
+            mpq_t * y = ray ? constraint(Q, j) : generator(Q, j);
+
+            _wc_check_qdot3(X->d, x, y, X->t);
+            if (mpq_sgn(X->d) == 0)
+                for (f = 0; f < 3; f++)
+                    mpq_set(v[3 * n + f], y[f]);
+            n += mpq_sgn(X->d) == 0;
+        }
+        rk = rank3(v, n, X->w, X->d, X->t);
+        if (ray ? rk != 2 - Q->lin : rk != Q->dim - 1)
+        {
+            piece_says(why, k);
+            _wc_check_putf(why, "has the %s ", ray ? "ray" : "inequality");
+            _wc_check_put_qvec(why, x, 3);
+            _wc_check_put(why, ray ? ", which is not an extreme ray of it"
+                          : ", which is not a facet of it");
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* Face f of Q lists exactly the rays on every inequality that vanishes
+   on all of its rays (so it is a face of the closure, and all of it).
+   1, 0 or -1.  */
+static int
+face_rays(wc_check_text * why, claim_scratch * X, const wc_check_piece * Q,
+          size_t k, size_t f)
+{
+    size_t a, r, j;
+    unsigned char * tight = malloc(Q->nineq + 1), * listed;
+    int holds = 1;
+
+    listed = malloc(Q->nrays + 1);
+    if (tight == NULL || listed == NULL)
+        holds = -1;
+    for (a = 0; holds == 1 && a < Q->nineq; a++)
+    {
+        tight[a] = 1;
+        for (j = Q->foff[f]; j < Q->foff[f + 1] && tight[a]; j++)
+        {
+            _wc_check_qdot3(X->d, Q->ineq + 3 * a, Q->rays + 3 * Q->fray[j],
+                            X->t);
+            tight[a] = mpq_sgn(X->d) == 0;
+        }
+    }
+    for (r = 0; holds == 1 && r < Q->nrays; r++)
+        listed[r] = 0;
+    for (j = Q->foff[f]; holds == 1 && j < Q->foff[f + 1]; j++)
+        listed[Q->fray[j]] = 1;
+    for (r = 0; holds == 1 && r < Q->nrays; r++)
+    {
+        int on = 1;
+
+        for (a = 0; a < Q->nineq && on; a++)
+            if (tight[a])
+            {
+                _wc_check_qdot3(X->d, Q->ineq + 3 * a, Q->rays + 3 * r,
+                                X->t);
+                on = mpq_sgn(X->d) == 0;
+            }
+        if (on != listed[r])
+        {
+            piece_says(why, k);
+            _wc_check_putf(why, "has face %lu, which %s its ray %lu",
+                           (unsigned long) f + 1, on ? "leaves out"
+                           : "lists, off the face,", (unsigned long) r + 1);
+            holds = 0;
+        }
+    }
+    free(tight);
+    free(listed);
+    return holds;
+}
+
 /* The lines span the lineality space of the closure, and the dim and
    lineality_dim of the piece and the dim of each face are as stated.
    1, 0 or -1.  */
@@ -358,6 +473,8 @@ piece_spaces(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
                        Q->dim, rk);
         return 0;
     }
+    if ((rk = piece_incidence(why, X, Q, k)) != 1)
+        return rk;
     for (f = 0; f < Q->nfaces; f++)
     {
         size_t nr = Q->foff[f + 1] - Q->foff[f];
@@ -377,6 +494,8 @@ piece_spaces(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
                            Q->fdim[f], rk);
             return 0;
         }
+        if ((rk = face_rays(why, X, Q, k, f)) != 1)
+            return rk;
     }
     return 1;
 }

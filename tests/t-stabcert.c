@@ -1,0 +1,267 @@
+/* t-stabcert.c -- stability-set certificates (lib/analysis/stabcert.c,
+   lib/io/stabcertprint.c) round-trip through the checker (lib/check/).
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   On random problems of 1 to 4 fixels (degenerate layouts included, see
+   testutil.h) and on the example problems:
+
+   1. wc_stability_certificate_fprint writes a certificate that wc_verify
+      accepts (holds), whose claimed set is byte for byte the "strong"
+      object of stability --format=json;
+   2. the same certificate with the weakly stable cone claimed in place of
+      the strongly stable set is never accepted, whenever the two differ
+      (the checker finds a piece face with a motion, or a cell it cannot
+      place, or a cell naming a piece the claim no longer has);
+   3. a certificate cut short, or with its first cell dropped, does not
+      hold or is malformed, never accepted.  */
+
+#include <config.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "wrenchcone.h"
+#include "analysis/stability.h"
+#include "check/verify.h"
+#include "io/print.h"
+#include "testutil.h"
+
+static char *
+print_to_string(int (*put)(FILE *, const void *), const void * data,
+                size_t * len)
+{
+    char * s = NULL;
+    size_t n = 0;
+    FILE * f = open_memstream(&s, &n);
+
+    if (f == NULL || put(f, data) != WC_OK)
+    {
+        if (f != NULL)
+            fclose(f);
+        free(s);
+        return NULL;
+    }
+    fclose(f);
+    *len = n;
+    return s;
+}
+
+typedef struct
+{
+    const wc_problem_struct * P;
+    const wc_stability_struct * S;
+}
+job;
+
+static int
+put_cert(FILE * f, const void * p)
+{
+    const job * j = p;
+    wc_error_t err;
+    int st;
+
+    wc_error_init(err);
+    st = wc_stability_certificate_fprint(f, j->P, j->S, err);
+    if (st != WC_OK)
+    {
+        char * m = wc_error_format(err);
+
+        fprintf(stderr, "certificate: %s\n", m != NULL ? m : "?");
+        free(m);
+    }
+    wc_error_clear(err);
+    return st;
+}
+
+static int
+put_strong(FILE * f, const void * p)
+{
+    return wc_set_fprint_json(f, ((const wc_stability_struct *) p)->strong);
+}
+
+static int
+put_weak_as_set(FILE * f, const void * p)
+{
+    const wc_stability_struct * S = p;
+
+    fprintf(f, "{\"empty\": false, \"interior\": %s, \"pieces\": [",
+            S->weak->dim == 3 ? "true" : "false");
+    wc_cone_fprint_json(f, S->weak);
+    fputs("]}", f);
+    return WC_OK;
+}
+
+/* Verify text: 1 holds, 0 does not, -1 malformed or failed.  */
+static int
+verify(const char * text, size_t len)
+{
+    wc_error_t err;
+    char * reason = NULL, * summary = NULL;
+    int holds = 0, st;
+
+    wc_error_init(err);
+    st = wc_verify(&holds, &reason, &summary, text, len, "<cert>", err);
+    free(reason);
+    free(summary);
+    wc_error_clear(err);
+    return st != WC_OK ? -1 : holds;
+}
+
+/* text with [at, at + cut) replaced by ins (malloc'd).  */
+static char *
+splice(const char * text, size_t len, size_t at, size_t cut,
+       const char * ins, size_t * out)
+{
+    size_t n = strlen(ins);
+    char * s = malloc(len - cut + n + 1);
+
+    memcpy(s, text, at);
+    memcpy(s + at, ins, n);
+    memcpy(s + at + n, text + at + cut, len - at - cut);
+    *out = len - cut + n;
+    s[*out] = '\0';
+    return s;
+}
+
+static void
+check_problem(const wc_problem_t P, const char * what, slong it)
+{
+    wc_stability_t S;
+    wc_error_t err;
+    job j;
+    char * cert, * strong, * weak, * t;
+    size_t clen = 0, slen = 0, wlen = 0, tlen = 0;
+    const char * at;
+    int r;
+
+    wc_stability_init(S);
+    wc_error_init(err);
+    if (wc_stability(S, P, err) != WC_OK)
+        goto done;              /* the problem is refused: nothing to do */
+    j.P = P;
+    j.S = S;
+    cert = print_to_string(put_cert, &j, &clen);
+    if (cert == NULL)
+        wctest_fail("%s %ld: no certificate", what, (long) it);
+    r = verify(cert, clen);
+    if (r != 1)
+        wctest_fail("%s %ld: the certificate %s:\n%s", what, (long) it,
+                    r < 0 ? "is malformed" : "does not hold", cert);
+    strong = print_to_string(put_strong, S, &slen);
+    at = strstr(cert, "\n \"strong\": ");
+    if (at == NULL || strncmp(at + 12, strong, slen) != 0)
+        wctest_fail("%s %ld: the claim is not the set as printed", what,
+                    (long) it);
+
+    /* the weak cone claimed as the strong set */
+    weak = print_to_string(put_weak_as_set, S, &wlen);
+    if (wlen != slen || memcmp(weak, strong, slen) != 0)
+    {
+        t = splice(cert, clen, (size_t) (at + 12 - cert), slen, weak, &tlen);
+        /* (malformed when a cell names a piece the weak cone lacks) */
+        if (verify(t, tlen) == 1)
+            wctest_fail("%s %ld: claiming the weak cone holds", what,
+                        (long) it);
+        free(t);
+    }
+
+    /* cut short: malformed */
+    if (verify(cert, clen / 2) >= 0)
+        wctest_fail("%s %ld: half a certificate is read", what, (long) it);
+    /* the first cell dropped */
+    at = strstr(cert, "\"cells\": [\n  ");
+    if (at != NULL)
+    {
+        const char * end = strstr(at, "},\n  ");
+
+        if (end != NULL)
+        {
+            size_t from = (size_t) (at + 13 - cert);
+
+            t = splice(cert, clen, from, (size_t) (end + 5 - cert) - from,
+                       "", &tlen);
+            if (verify(t, tlen) == 1)
+                wctest_fail("%s %ld: a certificate without its first cell "
+                            "holds", what, (long) it);
+            free(t);
+        }
+    }
+    free(cert);
+    free(strong);
+    free(weak);
+done:
+    wc_stability_clear(S);
+    wc_error_clear(err);
+}
+
+/* data/NAME into P (top_srcdir from the environment, as make check sets
+   it); 0 when it is not set.  */
+static int
+load_data(wc_problem_t P, const char * name)
+{
+    const char * top = getenv("top_srcdir");
+    char * path, * text;
+    FILE * f;
+    long n;
+    wc_error_t err;
+    int st;
+
+    if (top == NULL)
+        return 0;
+    path = malloc(strlen(top) + strlen(name) + 8);
+    sprintf(path, "%s/data/%s", top, name);
+    f = fopen(path, "rb");
+    if (f == NULL || fseek(f, 0, SEEK_END) != 0 || (n = ftell(f)) < 0
+        || fseek(f, 0, SEEK_SET) != 0)
+        wctest_fail("cannot read %s", path);
+    text = malloc((size_t) n + 1);
+    if (fread(text, 1, (size_t) n, f) != (size_t) n)
+        wctest_fail("cannot read %s", path);
+    fclose(f);
+    wc_error_init(err);
+    st = wc_problem_parse(P, text, (size_t) n, path, err);
+    if (st != WC_OK)
+        wctest_fail("cannot parse %s", path);
+    wc_error_clear(err);
+    free(text);
+    free(path);
+    return 1;
+}
+
+int
+main(void)
+{
+    static const char * const files[] = {
+        "disk-two-fixels.wc", "disk-two-fixels-insert.wc", "section4.wc",
+        "three-fixels.wc", "three-fixels-insert.wc", "peg-in-hole.wc"
+    };
+    slong i, n = wctest_iters(40);
+    size_t k;
+
+    wctest_init("t-stabcert");
+    for (k = 0; k < sizeof files / sizeof files[0]; k++)
+    {
+        wc_problem_t P;
+
+        wc_problem_init(P);
+        if (load_data(P, files[k]))
+            check_problem(P, files[k], 0);
+        wc_problem_clear(P);
+    }
+    for (i = 0; i < n; i++)
+    {
+        wc_problem_t P;
+
+        if (!wctest_iter(i))
+            continue;
+        wc_problem_init(P);
+        wctest_random_problem(P, 1, 4);
+        check_problem(P, "random problem", i);
+        wc_problem_clear(P);
+    }
+    return 0;
+}
