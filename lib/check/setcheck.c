@@ -922,9 +922,13 @@ _wc_check_set_certificate(wc_check_reader * c, const wc_json_node * root,
     set_init(&K);
     if (read_set(c, &K, root) == WC_OK)
     {
-        _wc_check_putf(what, "the strongly stable set (%lu piece%s) is "
-                       "exact", (unsigned long) K.claim.npieces,
-                       K.claim.npieces == 1 ? "" : "s");
+        _wc_check_putf(what, "the strongly stable set is exact: %lu "
+                       "piece%s, %lu moving face%s, %lu cells",
+                       (unsigned long) K.claim.npieces,
+                       K.claim.npieces == 1 ? "" : "s",
+                       (unsigned long) K.S.nfaces,
+                       K.S.nfaces == 1 ? "" : "s",
+                       (unsigned long) K.cells->len);
         h = check_set(why, &K);
         if (h < 0)
             _wc_check_nomem(c);

@@ -1,5 +1,5 @@
 /* verify.c -- re-check a certificate (mode feasibility, strong
-   stability) with GMP alone: the public entry points.
+   stability, stability sets) with GMP alone: the public entry points.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -17,7 +17,8 @@
 
    The files: checker.h (what they share), gmpvec.c, textbuf.c,
    motzkin.c, read.c, problem.c; feasible.c (mode feasibility);
-   stabread.c, stabcheck.c, faces.c, facecheck.c (strong stability).  */
+   stabread.c, stabcheck.c, faces.c, facecheck.c (strong stability);
+   arrcells.c, setread.c, setcheck.c (stability sets).  */
 
 #include <stdlib.h>
 

@@ -46,7 +46,7 @@ int wc_verify_certificate(int * holds, char ** reason, char ** mode,
                           int * feasible, const char * text, size_t len,
                           const char * file, wc_error_t err);
 
-/* Check a certificate of either kind: text, len and file as above.
+/* Check a certificate of any kind: text, len and file as above.
    Returns WC_OK and sets *holds to 1 or 0; *summary (malloc'd, caller
    frees) to a one-line account of what the certificate claims, which is
    what it proves when *holds is 1:
@@ -54,6 +54,8 @@ int wc_verify_certificate(int * holds, char ** reason, char ** mode,
      "wrench (0, -1, 0) is strongly stable: 9 moving faces excluded",
      "wrench (-1, -1, -1) is weakly stable but moves in mode ls",
      "wrench (0, 1, 0) is not weakly stable";
+     "the strongly stable set is exact: 1 piece, 9 moving faces, 267
+     cells";
    and when *holds is 0, *reason (malloc'd, caller frees; else NULL) to
    one line saying what failed.  Returns WC_EINPUT, located as
    wc_verify_certificate does, when the text is not a well-formed
@@ -65,7 +67,7 @@ int wc_verify(int * holds, char ** reason, char ** summary,
               const char * text, size_t len, const char * file,
               wc_error_t err);
 
-/* Check a certificate of either kind (text, len and file as above) and
+/* Check a certificate of any kind (text, len and file as above) and
    write the verdict to out in one line: "certificate holds: SUMMARY" or
    "certificate does not hold: REASON" (wc_verify's summary and reason),
    or with json nonzero the JSON object {"holds": true|false, then for a
