@@ -13,6 +13,7 @@ lib_libwc_la_SOURCES += \
 	lib/analysis/facesys.c \
 	lib/analysis/classify.c \
 	lib/analysis/stability.c \
+	lib/analysis/setcert.c \
 	lib/analysis/stabcert.c \
 	lib/analysis/planstr.c \
 	lib/analysis/plancones.c \
@@ -31,4 +32,5 @@ noinst_HEADERS += \
 	lib/analysis/planparts.h \
 	lib/analysis/stabmodel.h \
 	lib/analysis/facesys.h \
+	lib/analysis/setcert.h \
 	lib/analysis/stabcert.h

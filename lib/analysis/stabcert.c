@@ -26,76 +26,38 @@ int
 _wc_stabcert_init(_wc_stabcert * C, const wc_problem_t P,
                   const wc_stability_t S, wc_error_t err)
 {
-    slong i, most = 0;
+    const wc_cone_struct ** Q;
+    slong i, nq = S->strong->npieces + S->nmoving;
+    int status;
 
     C->S = S;
     _wc_stab_model_init(&C->m, P);
-    C->off = C->ray = NULL;
     C->face = flint_malloc(sizeof(slong) * (S->nmoving + 1));
     C->nfaces = 0;
     for (i = 0; i < S->nmoving; i++)
         if (S->moving_rot[i] != 2)
             C->face[C->nfaces++] = i;
-    C->G = C->F = NULL;
-    C->gcap = C->fcap = 0;
-    if (wc_cells_rays(&C->off, &C->ray, S->cells, err) != WC_OK)
-        return WC_EINTERNAL;
-    for (i = 0; i < S->cells->count; i++)
-        if (C->off[i + 1] - C->off[i] > most)
-            most = C->off[i + 1] - C->off[i];
-    C->gcap = most + 1;
-    C->G = _fmpq_vec_init(3 * C->gcap);
-    most = 1;
-    for (i = 0; i < S->strong->npieces + S->nmoving; i++)
-    {
-        const wc_cone_struct * Q = i < S->strong->npieces
-            ? S->strong->pieces + i : S->moving + (i - S->strong->npieces);
-        slong g = fmpz_mat_nrows(Q->rays) + 2 * fmpz_mat_nrows(Q->lines);
-
-        most = g > most ? g : most;
-    }
-    C->fcap = most;
-    C->F = _fmpq_vec_init(3 * C->fcap);
-    return WC_OK;
+    Q = flint_malloc(sizeof(wc_cone_struct *) * (nq + 1));
+    for (i = 0; i < nq; i++)
+        Q[i] = i < S->strong->npieces ? S->strong->pieces + i
+            : S->moving + (i - S->strong->npieces);
+    status = _wc_setcert_init(&C->base, S->cells, Q, nq, err);
+    flint_free(Q);
+    return status;
 }
 
 void
 _wc_stabcert_clear(_wc_stabcert * C)
 {
     _wc_stab_model_clear(&C->m);
-    flint_free(C->off);
-    flint_free(C->ray);
     flint_free(C->face);
-    if (C->G != NULL)
-        _fmpq_vec_clear(C->G, 3 * C->gcap);
-    if (C->F != NULL)
-        _fmpq_vec_clear(C->F, 3 * C->fcap);
+    _wc_setcert_clear(&C->base);
 }
 
 static int
 bug(wc_error_t err, const char * what)
 {
-    return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "internal error: "
-                        "the strong stability set %s", what);
-}
-
-slong
-_wc_stabcert_generators(_wc_stabcert * C, const wc_cone_struct * Q,
-                        slong f)
-{
-    slong j, l, g = 0, nr = f < 0 ? fmpz_mat_nrows(Q->rays)
-        : Q->faces[f].nrays;
-
-    for (j = 0; j < nr; j++, g++)
-        _fmpq_vec_set_fmpz_vec(C->F + 3 * g, WC_ROW(Q->rays,
-                               f < 0 ? j : Q->faces[f].rays[j]), 3);
-    for (l = 0; l < fmpz_mat_nrows(Q->lines); l++, g += 2)
-    {
-        _fmpq_vec_set_fmpz_vec(C->F + 3 * g, WC_ROW(Q->lines, l), 3);
-        for (j = 0; j < 3; j++)
-            fmpq_neg(C->F + 3 * (g + 1) + j, C->F + 3 * g + j);
-    }
-    return g;
+    return _wc_setcert_bug(err, "strong stability set", what);
 }
 
 /* ---------------------------------------------------------------------
@@ -126,7 +88,7 @@ prove_face(_wc_piece_proof * pp, _wc_stabcert * C, slong k, slong f,
            wc_error_t err)
 {
     const wc_stability_struct * S = C->S;
-    slong j, y, ng = _wc_stabcert_generators(C, S->strong->pieces + k, f);
+    slong j, y, ng = _wc_setcert_generators(&C->base, S->strong->pieces + k, f);
     int r;
 
     pp->mult[f] = flint_calloc(C->nfaces + 1, sizeof(fmpq *));
@@ -136,7 +98,7 @@ prove_face(_wc_piece_proof * pp, _wc_stabcert * C, slong k, slong f,
         y = C->face[j];
         r = _wc_face_solve_cone(NULL, NULL, pp->mult[f] + j,
                                 pp->nmult[f] + j, &C->m, S->moving_sign[y],
-                                S->moving_sign[y], S->moving_rot[y], C->F,
+                                S->moving_sign[y], S->moving_rot[y], C->base.F,
                                 ng, 0, err);
         if (r != 0)
             return r < 0 ? WC_EINTERNAL : bug(err, "holds wrenches that "
@@ -154,7 +116,7 @@ _wc_stabcert_piece(_wc_piece_proof * pp, _wc_stabcert * C, slong k,
     fmpq sep[3];
     int status = WC_OK, r;
 
-    pp->ngen = _wc_stabcert_generators(C, Q, -1);
+    pp->ngen = _wc_setcert_generators(&C->base, Q, -1);
     pp->c = _fmpq_vec_init(pp->ngen * n2 + 1);
     pp->nfaces = Q->nfaces;
     pp->mult = flint_calloc(Q->nfaces + 1, sizeof(fmpq **));
@@ -163,7 +125,7 @@ _wc_stabcert_piece(_wc_piece_proof * pp, _wc_stabcert * C, slong k,
         fmpq_init(sep + j);
     for (g = 0; g < pp->ngen && status == WC_OK; g++)
     {
-        r = _wc_stab_weak(pp->c + g * n2, sep, &C->m, C->F + 3 * g, err);
+        r = _wc_stab_weak(pp->c + g * n2, sep, &C->m, C->base.F + 3 * g, err);
         if (r != 1)
             status = r < 0 ? WC_EINTERNAL : bug(err, "has a piece that is "
                                                 "not weakly stable");
@@ -218,7 +180,7 @@ _wc_stabcert_cone(_wc_cone_proof * cp, _wc_stabcert * C, slong j,
     fmpq sum[3];
     int status = WC_OK;
 
-    cp->ngen = _wc_stabcert_generators(C, Q, -1);
+    cp->ngen = _wc_setcert_generators(&C->base, Q, -1);
     cp->nfaces = Q->nfaces;
     cp->closure = flint_malloc(sizeof(wc_motion_struct) * (cp->ngen + 1));
     cp->motion = flint_malloc(sizeof(wc_motion_struct) * (cp->nfaces + 1));
@@ -228,7 +190,7 @@ _wc_stabcert_cone(_wc_cone_proof * cp, _wc_stabcert * C, slong j,
     for (f = 0; f < cp->nfaces; f++)
         _wc_motion_init(cp->motion + f, C->m.n);
     for (g = 0; g < cp->ngen && status == WC_OK; g++)
-        status = face_motion(cp->closure + g, C, y, C->F + 3 * g, 1, err);
+        status = face_motion(cp->closure + g, C, y, C->base.F + 3 * g, 1, err);
     for (k = 0; k < 3; k++)
         fmpq_init(sum + k);
     for (f = 0; f < cp->nfaces && status == WC_OK; f++)
@@ -237,12 +199,12 @@ _wc_stabcert_cone(_wc_cone_proof * cp, _wc_stabcert * C, slong j,
 
         if (!(cp->included[f] = Q->faces[f].included))
             continue;
-        ng = _wc_stabcert_generators(C, Q, f);
+        ng = _wc_setcert_generators(&C->base, Q, f);
         for (k = 0; k < 3; k++)
             fmpq_zero(sum + k);
         for (g = 0; g < ng; g++)
             for (k = 0; k < 3; k++)
-                fmpq_add(sum + k, sum + k, C->F + 3 * g + k);
+                fmpq_add(sum + k, sum + k, C->base.F + 3 * g + k);
         status = face_motion(cp->motion + f, C, y, sum, 0, err);
     }
     for (k = 0; k < 3; k++)
@@ -252,112 +214,6 @@ _wc_stabcert_cone(_wc_cone_proof * cp, _wc_stabcert * C, slong j,
 
 /* ---------------------------------------------------------------------
    The cells.  */
-
-void
-_wc_cell_proof_init(_wc_cell_proof * pf, const _wc_stabcert * C)
-{
-    slong k;
-
-    pf->reason = WC_CELL_STRONG;
-    for (k = 0; k < 3; k++)
-        fmpq_init(pf->sep + k);
-    pf->owner = pf->face = -1;
-    pf->nrays = 0;
-    pf->ngen = 0;
-    pf->alpha = _fmpq_vec_init(C->fcap);
-    pf->beta = _fmpq_vec_init(C->gcap * C->fcap);
-}
-
-void
-_wc_cell_proof_clear(_wc_cell_proof * pf, const _wc_stabcert * C)
-{
-    slong k;
-
-    for (k = 0; k < 3; k++)
-        fmpq_clear(pf->sep + k);
-    _fmpq_vec_clear(pf->alpha, C->fcap);
-    _fmpq_vec_clear(pf->beta, C->gcap * C->fcap);
-}
-
-/* alpha (ng) with every entry > 0 and sum alpha_i F_i = x, x known to lie
-   in relint pos(F): x - t s is in pos(F) for s = sum F_i and some t > 0,
-   found by halving t from 1 (a 3-D simplex each, exact/lp.h), and then
-   alpha = (its coefficients) + t.  1, or -1 on failure.  */
-static int
-strictly_inside(fmpq * alpha, const fmpq * F, slong ng, const fmpq * x,
-                wc_error_t err)
-{
-    fmpq y[3], s[3], sep[3];
-    fmpq_t t;
-    slong i, k, tries;
-    int r = 0;
-
-    fmpq_init(t);
-    for (k = 0; k < 3; k++)
-    {
-        fmpq_init(y + k);
-        fmpq_init(s + k);
-        fmpq_init(sep + k);
-        for (i = 0; i < ng; i++)
-            fmpq_add(s + k, s + k, F + 3 * i + k);
-    }
-    fmpq_one(t);
-    for (tries = 0; tries < 200 && r == 0; tries++)
-    {
-        for (k = 0; k < 3; k++)
-        {
-            fmpq_mul(y + k, t, s + k);
-            fmpq_sub(y + k, x + k, y + k);
-        }
-        r = _wc_lp_cone3(alpha, sep, F, ng, y, err);
-        if (r == 0)
-            fmpq_div_2exp(t, t, 1);
-    }
-    for (i = 0; r == 1 && i < ng; i++)
-        fmpq_add(alpha + i, alpha + i, t);
-    if (r == 0)
-    {
-        wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "internal error: a "
-                     "cell's point is not inside its face");
-        r = -1;
-    }
-    fmpq_clear(t);
-    for (k = 0; k < 3; k++)
-    {
-        fmpq_clear(y + k);
-        fmpq_clear(s + k);
-        fmpq_clear(sep + k);
-    }
-    return r;
-}
-
-/* A cell in the included face of Q (owner) that holds its sum.  */
-static int
-prove_located(_wc_cell_proof * pf, _wc_stabcert * C,
-              const wc_cone_struct * Q, slong owner, const fmpq * sum,
-              wc_error_t err)
-{
-    fmpq sep[3];
-    slong f = wc_cone_locate(Q, sum), j;
-    int r;
-
-    if (f < 0 || !Q->faces[f].included)
-        return bug(err, "misses a cell");
-    pf->owner = owner;
-    pf->face = f;
-    pf->ngen = _wc_stabcert_generators(C, Q, f);
-    r = strictly_inside(pf->alpha, C->F, pf->ngen, sum, err);
-    for (j = 0; j < 3; j++)
-        fmpq_init(sep + j);
-    for (j = 0; r == 1 && j < pf->nrays; j++)
-        r = _wc_lp_cone3(pf->beta + j * pf->ngen, sep, C->F, pf->ngen,
-                         C->G + 3 * j, err);
-    for (j = 0; j < 3; j++)
-        fmpq_clear(sep + j);
-    if (r != 1)
-        return r < 0 ? WC_EINTERNAL : bug(err, "has a cell across a face");
-    return WC_OK;
-}
 
 /* A cell outside the weak cone W lies on the open outer side of one of
    W's facets (the arrangement has W's planes), or off one of its
@@ -385,7 +241,7 @@ facet_separates(_wc_cell_proof * pf, _wc_stabcert * C, const fmpq * sum)
         ok = 1;
         for (j = 0; j < pf->nrays && ok; j++)
         {
-            _wc_zqvec3_dot(d, h, C->G + 3 * j);
+            _wc_zqvec3_dot(d, h, C->base.G + 3 * j);
             ok = fmpq_sgn(d) * side >= 0;
         }
         for (k = 0; ok && k < 3; k++)
@@ -413,7 +269,6 @@ prove_not_weak(_wc_cell_proof * pf, _wc_stabcert * C, const fmpq * sum,
     fmpq ed[4];
     int ok;
 
-    pf->reason = WC_CELL_NOT_WEAK;
     fmpq_mat_init(A, rows, 3);
     for (k = 0; k < 4; k++)
         fmpq_init(ed + k);
@@ -427,7 +282,7 @@ prove_not_weak(_wc_cell_proof * pf, _wc_stabcert * C, const fmpq * sum,
     }
     for (i = 0; i < pf->nrays; i++)
     {
-        _wc_qvec_set(A->rows[r], C->G + 3 * i, 3);
+        _wc_qvec_set(A->rows[r], C->base.G + 3 * i, 3);
         rel[r++] = WC_REL_GE;
     }
     _wc_qvec_set(A->rows[r], sum, 3);
@@ -448,45 +303,37 @@ _wc_stabcert_cell(_wc_cell_proof * pf, _wc_stabcert * C, slong i,
                   wc_error_t err)
 {
     const wc_stability_struct * S = C->S;
-    const wc_cells_struct * A = S->cells;
-    slong k, j, nr = C->off[i + 1] - C->off[i];
+    slong k, j;
     fmpq sum[3];
-    int status = WC_OK, weak = 1;
+    int status = WC_OK;
 
-    pf->nrays = nr;
-    pf->owner = pf->face = -1;
     for (k = 0; k < 3; k++)
         fmpq_init(sum + k);
-    for (k = 0; k < nr; k++)
-    {
-        _fmpq_vec_set_fmpz_vec(C->G + 3 * k,
-                               WC_ROW(A->point, C->ray[C->off[i] + k]), 3);
-        for (j = 0; j < 3; j++)
-            fmpq_add(sum + j, sum + j, C->G + 3 * k + j);
-    }
+    pf->nrays = _wc_setcert_rays(&C->base, i, sum);
+    pf->owner = pf->face = -1;
     for (k = 0; k < S->strong->npieces; k++)
         if (wc_cone_contains(S->strong->pieces + k, sum))
             break;
-    pf->reason = WC_CELL_STRONG;
+    pf->reason = WC_CELL_IN;
     if (k < S->strong->npieces)
-        status = prove_located(pf, C, S->strong->pieces + k, k, sum, err);
+        status = _wc_setcert_locate(pf, &C->base, S->strong->pieces + k, k,
+                                    sum, err);
+    else if (!wc_cone_contains(S->weak, sum))
+    {
+        pf->reason = WC_CELL_NOT_WEAK;
+        if (!facet_separates(pf, C, sum))
+            status = prove_not_weak(pf, C, sum, err);
+    }
     else
     {
-        weak = wc_cone_contains(S->weak, sum);
-        if (!weak && !facet_separates(pf, C, sum))
-            status = prove_not_weak(pf, C, sum, err);
-        else if (!weak)
-            pf->reason = WC_CELL_NOT_WEAK;
-        else
-        {
-            pf->reason = WC_CELL_MOVES;
-            for (j = 0; j < C->nfaces; j++)
-                if (wc_cone_contains(S->moving + C->face[j], sum))
-                    break;
-            status = j == C->nfaces ? bug(err, "leaves out a strongly "
-                                          "stable cell")
-                : prove_located(pf, C, S->moving + C->face[j], j, sum, err);
-        }
+        pf->reason = WC_CELL_EXCLUDED;
+        for (j = 0; j < C->nfaces; j++)
+            if (wc_cone_contains(S->moving + C->face[j], sum))
+                break;
+        status = j == C->nfaces ? bug(err, "leaves out a strongly stable "
+                                      "cell")
+            : _wc_setcert_locate(pf, &C->base, S->moving + C->face[j], j,
+                                 sum, err);
     }
     for (k = 0; k < 3; k++)
         fmpq_clear(sum + k);

@@ -33,29 +33,7 @@
 #include "core/error.h"
 #include "analysis/stabmodel.h"
 #include "analysis/stability.h"
-
-typedef enum
-{
-    WC_CELL_STRONG = 0,         /* in the set */
-    WC_CELL_NOT_WEAK = 1,       /* outside: a separator */
-    WC_CELL_MOVES = 2           /* outside: a moving face's cone */
-}
-wc_cell_reason;
-
-/* The proof of one cell.  */
-typedef struct
-{
-    wc_cell_reason reason;
-    fmpq sep[3];                /* WC_CELL_NOT_WEAK */
-    slong nrays;
-    slong owner, face;          /* the piece (WC_CELL_STRONG) or moving face
-                                   (WC_CELL_MOVES, index in the face list),
-                                   and the face of its cone */
-    slong ngen;                 /* that face's generators G_F */
-    fmpq * alpha;               /* ngen: sum r_j = sum alpha_i G_i */
-    fmpq * beta;                /* nrays x ngen: r_j = sum beta_ji G_i */
-}
-_wc_cell_proof;
+#include "analysis/setcert.h"
 
 /* The proof that the included faces of one piece are strongly stable.  */
 typedef struct
@@ -84,30 +62,18 @@ _wc_cone_proof;
 /* What the proofs of one stability computation share.  */
 typedef struct
 {
+    _wc_setcert base;           /* the cells, and room for rays */
     const wc_stability_struct * S;
     _wc_stab_model m;
-    slong * off, * ray;         /* the rays of each cell (wc_cells_rays) */
     slong nfaces;               /* the moving faces: S->moving without */
     slong * face;               /* the pieces of a problem with nothing
                                    touching (index into S->moving) */
-    fmpq * G;                   /* 3 * (the most rays of a cell + 1) */
-    slong gcap;
-    fmpq * F;                   /* 3 * (the most generators of a cone) */
-    slong fcap;
 }
 _wc_stabcert;
 
 int _wc_stabcert_init(_wc_stabcert * C, const wc_problem_t P,
                       const wc_stability_t S, wc_error_t err);
 void _wc_stabcert_clear(_wc_stabcert * C);
-
-void _wc_cell_proof_init(_wc_cell_proof * pf, const _wc_stabcert * C);
-void _wc_cell_proof_clear(_wc_cell_proof * pf, const _wc_stabcert * C);
-
-/* The generators of face f of Q into C->F (f = -1: of Q itself, its
-   rays then each line both ways); returns their number.  */
-slong _wc_stabcert_generators(_wc_stabcert * C, const wc_cone_struct * Q,
-                              slong f);
 
 /* cp := the proof of the cone of moving face j (index in the face list).
    Returns WC_OK or WC_EINTERNAL; clear cp after either.  */

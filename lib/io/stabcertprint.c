@@ -115,7 +115,7 @@ put_cell(FILE * out, const _wc_cell_proof * pf, const _wc_stabcert * C,
     (void) C;
     fputs("{\"point\": ", out);
     _wc_fprint_zvec(out, WC_ROW(C->S->cells->point, i), 3, 1);
-    fprintf(out, ", \"in\": %s", _wc_tf(pf->reason == WC_CELL_STRONG));
+    fprintf(out, ", \"in\": %s", _wc_tf(pf->reason == WC_CELL_IN));
     if (pf->reason == WC_CELL_NOT_WEAK)
     {
         fputs(", \"separator\": ", out);
@@ -124,8 +124,8 @@ put_cell(FILE * out, const _wc_cell_proof * pf, const _wc_stabcert * C,
     else
     {
         fprintf(out, ", \"%s\": %ld, \"%s\": %ld, \"sum\": ",
-                pf->reason == WC_CELL_STRONG ? "piece" : "face",
-                (long) pf->owner, pf->reason == WC_CELL_STRONG
+                pf->reason == WC_CELL_IN ? "piece" : "face",
+                (long) pf->owner, pf->reason == WC_CELL_IN
                 ? "piece_face" : "cone_face", (long) pf->face);
         wc_fprint_qvec(out, pf->alpha, pf->ngen, 1);
         fputs(", \"rays\": [", out);
@@ -223,7 +223,7 @@ wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
     if (status == WC_OK)
         status = put_pieces(out, &C, err);
     fputs(",\n \"cells\": [", out);
-    _wc_cell_proof_init(&pf, &C);
+    _wc_cell_proof_init(&pf, &C.base);
     for (i = 0; i < A->count && status == WC_OK; i++)
     {
         _wc_tick("cells of the certificate", i, A->count);
@@ -234,7 +234,7 @@ wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
             put_cell(out, &pf, &C, i);
         }
     }
-    _wc_cell_proof_clear(&pf, &C);
+    _wc_cell_proof_clear(&pf, &C.base);
     _wc_stabcert_clear(&C);
     if (status != WC_OK)
         return status;
