@@ -481,6 +481,61 @@ int _wc_check_read_claim(wc_check_reader * c, wc_check_claim * C,
 /* C describes its pieces consistently.  1, 0 (why written) or -1.  */
 int _wc_check_claim_valid(wc_check_text * why, wc_check_claim * C);
 
+/* What a certificate's cell says, read into storage of the right sizes.  */
+typedef struct
+{
+    const wc_json_node * at;
+    mpq_t * point;              /* 3 */
+    int in;
+    int has_sep;
+    mpq_t * sep;                /* 3 */
+    size_t owner, face;         /* the piece (in) or member of the family
+                                   (out), and the face of its cone */
+    const wc_json_node * sum, * rays;
+}
+wc_check_set_cell;
+
+/* Everything the check shares.  */
+typedef struct
+{
+    int plan;                   /* a plan-goal certificate, else a
+                                   stability-set one */
+    wc_check_stability S;       /* the problem and the excluding family:
+                                   moving faces, or a plan's strings */
+    wc_check_claim claim;
+    size_t nplanes;
+    mpz_t * H;
+    const wc_json_node * cells, * proofs, * moving;
+    wc_check_piece * mc;        /* the cone of each of the family */
+    wc_check_cells A;
+    wc_check_set_cell cell;
+    mpq_t * G;                  /* 3 (the most rays + 1) */
+    size_t gcap;
+    mpq_t * F;                  /* 3 (the most generators of a face) */
+    size_t fcap;
+    mpq_t * stat;               /* 2 n */
+    mpq_t * mult;
+    size_t nmult, multcap;
+}
+wc_check_set;
+
+void _wc_check_set_init(wc_check_set * K);
+void _wc_check_set_clear(wc_check_set * K);
+
+/* Read the whole certificate at root into K (K->plan set); errors into
+   c.  */
+int _wc_check_set_read(wc_check_reader * c, wc_check_set * K,
+                       const wc_json_node * root);
+
+/* One cell at v into K->cell; one motion at v into K->S.nudot and
+   K->S.motion_c; one array of rationals at v into K->mult (K->nmult).  */
+int _wc_check_set_read_cell(wc_check_reader * c, wc_check_set * K,
+                            const wc_json_node * v);
+int _wc_check_set_read_motion(wc_check_reader * c, wc_check_set * K,
+                              const wc_json_node * v);
+int _wc_check_set_read_mult(wc_check_reader * c, wc_check_set * K,
+                            const wc_json_node * v);
+
 /* Check the stability-set certificate at root (its kind read).  */
 int _wc_check_set_certificate(wc_check_reader * c,
                               const wc_json_node * root, int * holds,

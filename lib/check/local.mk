@@ -21,6 +21,7 @@ lib_libwccheck_la_SOURCES += \
 	lib/check/stabcheck.c \
 	lib/check/facecheck.c \
 	lib/check/setread.c \
+	lib/check/setdoc.c \
 	lib/check/setcheck.c
 wccheckdir = $(pkgincludedir)/check
 wccheck_HEADERS = \
