@@ -14,6 +14,7 @@
 
 #include "exact/lp.h"
 #include "exact/vec3.h"
+#include "analysis/stabmodel.h"
 #include "analysis/setcert.h"
 
 int
@@ -96,6 +97,39 @@ _wc_setcert_rays(_wc_setcert * C, slong i, fmpq * sum)
             fmpq_add(sum + j, sum + j, C->G + 3 * k + j);
     }
     return nr;
+}
+
+void
+_wc_piece_proof_clear(_wc_piece_proof * pp, slong n, slong nexcl)
+{
+    slong f, j;
+
+    if (pp->c != NULL)
+        _fmpq_vec_clear(pp->c, pp->ngen * 2 * n + 1);
+    for (f = 0; pp->mult != NULL && f < pp->nfaces; f++)
+    {
+        for (j = 0; pp->mult[f] != NULL && j < nexcl; j++)
+            if (pp->mult[f][j] != NULL)
+                _fmpq_vec_clear(pp->mult[f][j], pp->nmult[f][j]);
+        flint_free(pp->mult[f]);
+        flint_free(pp->nmult[f]);
+    }
+    flint_free(pp->mult);
+    flint_free(pp->nmult);
+}
+
+void
+_wc_cone_proof_clear(_wc_cone_proof * cp, slong n)
+{
+    slong k;
+
+    for (k = 0; cp->closure != NULL && k < cp->ngen; k++)
+        _wc_motion_clear(cp->closure + k, n);
+    for (k = 0; cp->motion != NULL && k < cp->nfaces; k++)
+        _wc_motion_clear(cp->motion + k, n);
+    flint_free(cp->closure);
+    flint_free(cp->motion);
+    flint_free(cp->included);
 }
 
 void

@@ -22,6 +22,7 @@
 #include "core/error.h"
 #include "exact/cone.h"
 #include "exact/cells.h"
+#include "analysis/stability.h"
 
 typedef enum
 {
@@ -44,6 +45,42 @@ typedef struct
     fmpq * beta;                /* nrays x ngen: r_j = sum beta_ji G_i */
 }
 _wc_cell_proof;
+
+/* The proof that the included faces of one piece are in the set:
+   static forces at its generators (a stability set only) and, for each
+   included face, one list of Motzkin multipliers per excluding cone.  */
+typedef struct
+{
+    slong ngen;                 /* rays, then each line both ways */
+    fmpq * c;                   /* ngen x 2 n: static forces at each, or
+                                   NULL */
+    slong nfaces;
+    fmpq *** mult;              /* nfaces: NULL (not included), or one
+                                   list per excluding cone */
+    slong ** nmult;
+}
+_wc_piece_proof;
+
+/* The proof that an excluding cone (a moving face's, a plan string's)
+   lies where it says: a motion of the closed face or string at each
+   generator, and for a cone that is not closed a motion at the sum of
+   each included face's generators.  */
+typedef struct
+{
+    slong ngen;                 /* rays, then each line both ways */
+    wc_motion_struct * closure; /* ngen: of the closed face, at each */
+    slong nfaces;
+    int * included;
+    wc_motion_struct * motion;  /* nfaces, or NULL for a closed cone: at
+                                   the sum of an included face's
+                                   generators */
+}
+_wc_cone_proof;
+
+/* Free the proofs of a problem of n fixels, with nexcl excluding
+   cones.  */
+void _wc_piece_proof_clear(_wc_piece_proof * pp, slong n, slong nexcl);
+void _wc_cone_proof_clear(_wc_cone_proof * cp, slong n);
 
 /* The cells and room for one cell's rays and one cone's generators.  */
 typedef struct

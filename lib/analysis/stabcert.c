@@ -63,24 +63,6 @@ bug(wc_error_t err, const char * what)
 /* ---------------------------------------------------------------------
    The pieces.  */
 
-void
-_wc_piece_proof_clear(_wc_piece_proof * pp, const _wc_stabcert * C)
-{
-    slong f, j;
-
-    if (pp->c != NULL)
-        _fmpq_vec_clear(pp->c, pp->ngen * 2 * C->m.n + 1);
-    for (f = 0; pp->mult != NULL && f < pp->nfaces; f++)
-    {
-        for (j = 0; pp->mult[f] != NULL && j < C->nfaces; j++)
-            if (pp->mult[f][j] != NULL)
-                _fmpq_vec_clear(pp->mult[f][j], pp->nmult[f][j]);
-        flint_free(pp->mult[f]);
-        flint_free(pp->nmult[f]);
-    }
-    flint_free(pp->mult);
-    flint_free(pp->nmult);
-}
 
 /* The multipliers of every moving face for the included face f.  */
 static int
@@ -141,19 +123,6 @@ _wc_stabcert_piece(_wc_piece_proof * pp, _wc_stabcert * C, slong k,
 /* ---------------------------------------------------------------------
    The moving cones.  */
 
-void
-_wc_cone_proof_clear(_wc_cone_proof * cp, const _wc_stabcert * C)
-{
-    slong k;
-
-    for (k = 0; cp->closure != NULL && k < cp->ngen; k++)
-        _wc_motion_clear(cp->closure + k, C->m.n);
-    for (k = 0; cp->motion != NULL && k < cp->nfaces; k++)
-        _wc_motion_clear(cp->motion + k, C->m.n);
-    flint_free(cp->closure);
-    flint_free(cp->motion);
-    flint_free(cp->included);
-}
 
 /* A motion of face y (of its closure when closed) for the wrench g.  */
 static int

@@ -35,30 +35,6 @@
 #include "analysis/stability.h"
 #include "analysis/setcert.h"
 
-/* The proof that the included faces of one piece are strongly stable.  */
-typedef struct
-{
-    slong ngen;                 /* rays, then each line both ways */
-    fmpq * c;                   /* ngen x 2 n: static forces at each */
-    slong nfaces;
-    fmpq *** mult;              /* nfaces: NULL (not included), or one
-                                   list per moving face */
-    slong ** nmult;
-}
-_wc_piece_proof;
-
-/* The proof that a moving face's cone is what it says.  */
-typedef struct
-{
-    slong ngen;                 /* rays, then each line both ways */
-    wc_motion_struct * closure; /* ngen: of the closed face, at each */
-    slong nfaces;
-    int * included;
-    wc_motion_struct * motion;  /* nfaces: at the sum of an included
-                                   face's generators */
-}
-_wc_cone_proof;
-
 /* What the proofs of one stability computation share.  */
 typedef struct
 {
@@ -79,14 +55,12 @@ void _wc_stabcert_clear(_wc_stabcert * C);
    Returns WC_OK or WC_EINTERNAL; clear cp after either.  */
 int _wc_stabcert_cone(_wc_cone_proof * cp, _wc_stabcert * C, slong j,
                       wc_error_t err);
-void _wc_cone_proof_clear(_wc_cone_proof * cp, const _wc_stabcert * C);
 
 /* pp := the proof of piece k of the strong set.  Returns WC_OK or
    WC_EINTERNAL (a bug when a proof cannot be found); clear pp after
    either.  */
 int _wc_stabcert_piece(_wc_piece_proof * pp, _wc_stabcert * C, slong k,
                        wc_error_t err);
-void _wc_piece_proof_clear(_wc_piece_proof * pp, const _wc_stabcert * C);
 
 /* pf := the proof of cell i (pf initialised for C, reused across cells).
    Returns WC_OK, or WC_EINTERNAL when a proof cannot be found -- the set

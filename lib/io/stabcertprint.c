@@ -72,7 +72,7 @@ put_faces(FILE * out, _wc_stabcert * C, wc_error_t err)
             }
             fputs("]}", out);
         }
-        _wc_cone_proof_clear(&cp, C);
+        _wc_cone_proof_clear(&cp, C->m.n);
     }
     fputc(']', out);
     return status;
@@ -185,7 +185,7 @@ put_pieces(FILE * out, _wc_stabcert * C, wc_error_t err)
             }
             fputs("]}", out);
         }
-        _wc_piece_proof_clear(&pp, C);
+        _wc_piece_proof_clear(&pp, C->m.n, C->nfaces);
     }
     fputc(']', out);
     return status;
