@@ -41,6 +41,7 @@ SH_TESTS = \
 	tests/cli-cone.sh \
 	tests/cli-errors.sh \
 	tests/cli-verify.sh \
+	tests/cert-tamper.sh \
 	tests/verify-standalone.sh \
 	tests/cli-double.sh \
 	tests/cli-compare.sh \
@@ -66,7 +67,7 @@ AM_TESTS_ENVIRONMENT = \
 	export WRENCHCONE top_srcdir top_builddir CC WC_SAN MAKE LSAN_OPTIONS;
 
 EXTRA_DIST += $(SH_TESTS) tests/bad tests/golden tests/certs tests/lsan.supp \
-	tests/update-golden.py tests/install
+	tests/update-golden.py tests/install tests/cert-tamper.py
 
 # The C tests' names, for running them alone (.ci/run widens them).
 print-c-tests:
