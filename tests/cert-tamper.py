@@ -50,8 +50,8 @@ ENUMS = {
     'kind': ['mode-feasibility', 'strong-stability', 'stability-set'],
 }
 SIGN_KEYS = ('sign', 'mode')
-BUDGET = {'mode-feasibility': 200, 'strong-stability': 200,
-          'stability-set': 320}
+BUDGET = {'mode-feasibility': 80, 'strong-stability': 80,
+          'stability-set': 140}
 
 # (class pattern, changes or None for all, how a survivor is judged):
 # 'never' -- it must always be caught; 'claim' -- harmless only when the

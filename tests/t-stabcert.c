@@ -16,7 +16,8 @@
       (the checker finds a piece face with a motion, or a cell it cannot
       place, or a cell naming a piece the claim no longer has);
    3. a certificate cut short, or with its first cell dropped, does not
-      hold or is malformed, never accepted.  */
+      hold or is malformed, never accepted; one with a static force vector
+      an entry short is malformed.  */
 
 #include <config.h>
 
@@ -187,6 +188,25 @@ check_problem(const wc_problem_t P, const char * what, slong it)
             if (verify(t, tlen) == 1)
                 wctest_fail("%s %ld: a certificate without its first cell "
                             "holds", what, (long) it);
+            free(t);
+        }
+    }
+    /* the first static force vector one entry short: malformed */
+    at = strstr(cert, "\"static\": [[\"");
+    if (at != NULL)
+    {
+        const char * comma = strstr(at, "\", \"");
+        const char * close = strchr(at, ']');
+
+        if (comma != NULL && close != NULL && comma < close)
+        {
+            size_t from = (size_t) (at + 12 - cert);
+
+            t = splice(cert, clen, from, (size_t) (comma + 3 - cert) - from,
+                       "", &tlen);
+            if (verify(t, tlen) >= 0)
+                wctest_fail("%s %ld: a short static force vector is read",
+                            what, (long) it);
             free(t);
         }
     }

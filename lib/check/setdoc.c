@@ -221,7 +221,11 @@ read_proofs(wc_check_reader * c, wc_check_set * K, const wc_json_node * root)
                                  "of the piece (%lu)",
                                  (unsigned long) Q->nfaces);
         for (j = 0; j < st->len && c->status == WC_OK; j++)
-            _wc_check_set_read_mult(c, K, st->items + j);
+            if (_wc_check_set_read_mult(c, K, st->items + j) == WC_OK
+                && K->nmult != 2 * K->S.P.n)
+                return _wc_check_bad(c, st->items + j, "static forces have "
+                                     "2 n = %lu entries",
+                                     (unsigned long) (2 * K->S.P.n));
         for (f = 0; f < fa->len && c->status == WC_OK; f++)
         {
             const wc_json_node * m = fa->items + f;
