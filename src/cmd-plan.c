@@ -29,17 +29,36 @@ const char cmd_plan_usage[] =
     "                   with the goal as its only sink (wrenchcone(1) states the\n"
     "                   transition model); as a set, or for the wrench given,\n"
     "                   with its transitions.  At most 6 fixels\n"
+    "  --certificate=FILE  also write a certificate (JSON) that G_goal is\n"
+    "                   exact, for wrenchcone verify (not with a wrench)\n"
     "  --format=FMT     text (default) or json\n"
     "  -h, --help       print this help and exit\n"
     "  -V, --version    print versions and exit\n";
 
-enum { OPT_FORMAT = 256, OPT_COMPLETE };
+enum { OPT_FORMAT = 256, OPT_COMPLETE, OPT_CERT };
 
 const struct option cmd_plan_options[] = {
     { "format", required_argument, NULL, OPT_FORMAT },
     { "complete", no_argument, NULL, OPT_COMPLETE },
+    { "certificate", required_argument, NULL, OPT_CERT },
     { NULL, 0, NULL, 0 }
 };
+
+typedef struct
+{
+    const wc_problem_struct * P;
+    const wc_plan_struct * R;
+    wc_error_struct * err;
+}
+cert_job;
+
+static int
+put_certificate(FILE * f, const void * p)
+{
+    const cert_job * j = p;
+
+    return wc_plan_certificate_fprint(f, j->P, j->R, j->err);
+}
 
 int
 cmd_plan(const cli_command * self, int argc, char ** argv)
@@ -47,6 +66,7 @@ cmd_plan(const cli_command * self, int argc, char ** argv)
     cli_options p;
     cli_format fmt = FMT_TEXT;
     int c, status, with_wrench, complete = 0;
+    const char * certificate = NULL;
     wc_problem_t P;
     wc_error_t err;
     wc_plan_t R;
@@ -58,6 +78,8 @@ cmd_plan(const cli_command * self, int argc, char ** argv)
     while ((c = cli_option(&p, argc, argv)) >= 0)
         if (c == OPT_COMPLETE)
             complete = 1;
+        else if (c == OPT_CERT)
+            certificate = optarg;
         else if (!cli_parse_format(&fmt, optarg, "plan", 0))
             return WC_EUSAGE;
     if (c == CLI_EXIT)
@@ -68,6 +90,9 @@ cmd_plan(const cli_command * self, int argc, char ** argv)
                                : "plan takes PROBLEM and optionally FX FY TAU%s",
                                "");
     with_wrench = argc - optind == 4;
+    if (with_wrench && certificate != NULL)
+        return cli_usage_error("plan", "--certificate certifies G_goal, "
+                               "not one wrench: drop FX FY TAU%s", "");
     wc_problem_init(P);
     wc_error_init(err);
     wc_plan_init(R);
@@ -80,7 +105,17 @@ cmd_plan(const cli_command * self, int argc, char ** argv)
     if (status == WC_OK)
         status = with_wrench ? wc_plan_wrench(W, P, g, complete, err)
             : wc_plan(R, P, complete, err);
-    if (status != WC_OK)
+    if (status == WC_OK && certificate != NULL)
+    {
+        cert_job j = { P, R, err };
+
+        status = cli_write_certificate(certificate, put_certificate, &j);
+        if (status != WC_OK && err->message == NULL)
+            status = -status;       /* reported already */
+    }
+    if (status < 0)
+        status = -status;
+    else if (status != WC_OK)
         cli_report(err, status);
     else
     {

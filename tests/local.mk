@@ -23,7 +23,7 @@ C_TESTS = \
 	tests/t-verify \
 	tests/t-faces \
 	tests/t-checkcells \
-	tests/t-stabcert \
+	tests/t-setcert \
 	tests/t-random \
 	tests/t-double \
 	tests/t-compare \

@@ -15,6 +15,7 @@ lib_libwc_la_SOURCES += \
 	lib/analysis/stability.c \
 	lib/analysis/setcert.c \
 	lib/analysis/stabcert.c \
+	lib/analysis/plancert.c \
 	lib/analysis/planstr.c \
 	lib/analysis/plancones.c \
 	lib/analysis/plangraph.c \
@@ -33,4 +34,5 @@ noinst_HEADERS += \
 	lib/analysis/stabmodel.h \
 	lib/analysis/facesys.h \
 	lib/analysis/setcert.h \
-	lib/analysis/stabcert.h
+	lib/analysis/stabcert.h \
+	lib/analysis/plancert.h

@@ -254,6 +254,15 @@ int wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
    "transitions": [{"from", "to", "via"}], "states"}} or text.  */
 int wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json);
 
+/* Write the certificate that R->goal is exactly G_goal for P (kind
+   "plan-goal", wrenchcone-certificate(5)): the goal pieces' faces proved
+   to miss every needed string's cone, those cones proved to hold their
+   generators, every cell of R's arrangement placed.  R must be wc_plan's
+   result for P.  Returns WC_OK, or WC_EINTERNAL (err set) when a proof
+   fails (a bug) or on a write error (plancertprint.c).  */
+int wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
+                               const wc_plan_t R, wc_error_t err);
+
 /* One friction value of a sweep: a JSON object (no newline) or a few
    lines of text.  */
 int wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,

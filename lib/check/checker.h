@@ -127,7 +127,8 @@ typedef enum
 {
     WC_CHECK_MODE = 0,          /* "mode-feasibility" or no "kind" */
     WC_CHECK_STABILITY = 1,     /* "strong-stability" */
-    WC_CHECK_SET = 2            /* "stability-set" */
+    WC_CHECK_SET = 2,           /* "stability-set" */
+    WC_CHECK_PLAN = 3           /* "plan-goal" */
 }
 wc_check_kind;
 
@@ -440,6 +441,7 @@ int _wc_check_stability_certificate(wc_check_reader * c,
 /* Stability-set certificates (setread.c, setcheck.c).                 */
 
 #define WC_CHECK_KIND_SET "stability-set"
+#define WC_CHECK_KIND_PLAN "plan-goal"
 
 /* One piece of a claimed set (or a moving face's cone): the closure
    {a . x <= 0, e . x = 0}, its rays and lines, its faces (rays, dim,
@@ -536,9 +538,25 @@ int _wc_check_set_read_motion(wc_check_reader * c, wc_check_set * K,
 int _wc_check_set_read_mult(wc_check_reader * c, wc_check_set * K,
                             const wc_json_node * v);
 
-/* Check the stability-set certificate at root (its kind read).  */
+/* A plan's strings (plansys.c).  S->faces, read from a plan-goal
+   certificate, are every string with one s and m or u elsewhere, each
+   once.  1, 0 or -1.  */
+int _wc_check_plan_strings(wc_check_text * why, const wc_check_stability * S);
+
+/* The multipliers y (ny) prove that no wrench of X (X->G, X->ng) lies in
+   the cone of the plan string x (number k).  1, 0 or -1.  */
+int _wc_check_plan_face(wc_check_scratch * X, size_t k, const char * x,
+                        mpq_t * y, size_t ny);
+
+/* The solution (S->nudot, S->motion_c) puts the wrench S->g in the cone
+   of the plan string x.  1 or 0.  */
+int _wc_check_plan_motion(wc_check_scratch * X, const char * x);
+
+/* Check the stability-set certificate (plan 0) or the plan-goal one
+   (plan 1) at root (its kind read).  */
 int _wc_check_set_certificate(wc_check_reader * c,
-                              const wc_json_node * root, int * holds,
-                              wc_check_text * why, wc_check_text * what);
+                              const wc_json_node * root, int plan,
+                              int * holds, wc_check_text * why,
+                              wc_check_text * what);
 
 #endif

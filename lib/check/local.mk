@@ -22,7 +22,8 @@ lib_libwccheck_la_SOURCES += \
 	lib/check/facecheck.c \
 	lib/check/setread.c \
 	lib/check/setdoc.c \
-	lib/check/setcheck.c
+	lib/check/setcheck.c \
+	lib/check/plansys.c
 wccheckdir = $(pkgincludedir)/check
 wccheck_HEADERS = \
 	lib/check/verify.h

@@ -317,11 +317,12 @@ check_moving(wc_check_scratch * X, wc_check_set * K, size_t j,
     X->closed = closed;
     X->rotation = F->rotation;
     at = X->why->len;
-    _wc_check_putf(X->why, "the cone of moving face %lu, at ",
-                   (unsigned long) j + 1);
+    _wc_check_putf(X->why, "the cone of %s %lu, at ", K->plan ? "string"
+                   : "moving face", (unsigned long) j + 1);
     _wc_check_put_qvec(X->why, g, 3);
-    _wc_check_put(X->why, closed ? " (closed): " : ": ");
-    holds = _wc_check_motion(X);
+    _wc_check_put(X->why, closed && !K->plan ? " (closed): " : ": ");
+    holds = K->plan ? _wc_check_plan_motion(X, F->sign->text)
+        : _wc_check_motion(X);
     unmark(X->why, at, holds);
     X->closed = 0;
     X->rotation = 0;
@@ -344,7 +345,8 @@ check_cone(wc_check_scratch * X, wc_check_set * K, size_t j)
     ng = face_generators(K, Q, Q->nfaces);
     for (g = 0; g < ng && holds == 1; g++)
         holds = check_moving(X, K, j, cl->items + g, K->F + 3 * g, 1);
-    for (f = 0; f < Q->nfaces && holds == 1; f++)
+    /* a string's cone is closed: its generators put all of it there */
+    for (f = 0; !K->plan && f < Q->nfaces && holds == 1; f++)
     {
         if (!Q->fincl[f])
             continue;
@@ -383,7 +385,7 @@ check_piece(wc_check_scratch * X, wc_check_set * K, size_t k)
     wc_error_init(e);
     quiet.err = e;
     /* every generator of the piece: the rays are those of face "all" */
-    for (g = 0; g < st->len && holds == 1; g++)
+    for (g = 0; st != NULL && g < st->len && holds == 1; g++)
     {
         size_t r = g < Q->nrays ? g : (g - Q->nrays) / 2;
         mpq_t * v = g < Q->nrays ? Q->rays + 3 * g : Q->lines + 3 * r;
@@ -421,8 +423,8 @@ check_piece(wc_check_scratch * X, wc_check_set * K, size_t k)
         if (m->type != WC_JSON_ARRAY || m->len != K->S.nfaces)
         {
             _wc_check_putf(X->why, "an included face needs one multiplier "
-                           "list per moving face (%lu)",
-                           (unsigned long) K->S.nfaces);
+                           "list per %s (%lu)", K->plan ? "string"
+                           : "moving face", (unsigned long) K->S.nfaces);
             holds = 0;
             break;
         }
@@ -441,7 +443,9 @@ check_piece(wc_check_scratch * X, wc_check_set * K, size_t k)
             _wc_check_putf(X->why, "the claimed set's piece %lu, face %lu, ",
                            (unsigned long) k + 1, (unsigned long) f + 1);
             if (holds == 1)
-                holds = _wc_check_face(X, j, &F);
+                holds = K->plan ? _wc_check_plan_face(X, j, F.sign->text,
+                                                      F.mult, F.nmult)
+                    : _wc_check_face(X, j, &F);
             unmark(X->why, at, holds);
         }
     }
@@ -535,7 +539,8 @@ check_set(wc_check_text * why, wc_check_set * K)
     if (holds == 1)
         holds = _wc_check_claim_valid(why, &K->claim);
     if (holds == 1)
-        holds = _wc_check_face_list(&X);
+        holds = K->plan ? _wc_check_plan_strings(why, &K->S)
+            : _wc_check_face_list(&X);
     if (holds == 1)
         holds = build_cells(K);
     for (i = 0; holds == 1 && i < K->claim.npieces; i++)
@@ -566,20 +571,22 @@ cleanup:
 
 int
 _wc_check_set_certificate(wc_check_reader * c, const wc_json_node * root,
-                          int * holds, wc_check_text * why,
+                          int plan, int * holds, wc_check_text * why,
                           wc_check_text * what)
 {
     wc_check_set K;
     int h;
 
     _wc_check_set_init(&K);
+    K.plan = plan;
     if (_wc_check_set_read(c, &K, root) == WC_OK)
     {
-        _wc_check_putf(what, "the strongly stable set is exact: %lu "
-                       "piece%s, %lu moving face%s, %lu cells",
+        _wc_check_putf(what, "the %s set is exact: %lu piece%s, %lu %s%s, "
+                       "%lu cells", plan ? "goal" : "strongly stable",
                        (unsigned long) K.claim.npieces,
                        K.claim.npieces == 1 ? "" : "s",
                        (unsigned long) K.S.nfaces,
+                       plan ? "string" : "moving face",
                        K.S.nfaces == 1 ? "" : "s",
                        (unsigned long) K.cells->len);
         h = check_set(why, &K);

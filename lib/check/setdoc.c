@@ -118,12 +118,14 @@ _wc_check_set_read_cell(wc_check_reader * c, wc_check_set * K, const wc_json_nod
         || _wc_check_member(c, v, "in", WC_CHECK_BOOL, &x) != WC_OK)
         return WC_EINPUT;
     C->in = x->type == WC_JSON_TRUE;
-    C->has_sep = !C->in && _wc_json_object_get(v, "separator") != NULL;
+    C->has_sep = !C->in && !K->plan
+        && _wc_json_object_get(v, "separator") != NULL;
     C->sum = C->rays = NULL;
     if (C->has_sep)
         return _wc_check_vector(c, v, "separator", C->sep, 3);
-    if (read_index(c, v, C->in ? "piece" : "face", C->in
-                   ? K->claim.npieces : K->S.nfaces, &C->owner) != WC_OK)
+    if (read_index(c, v, C->in ? "piece" : K->plan ? "string" : "face",
+                   C->in ? K->claim.npieces : K->S.nfaces, &C->owner)
+        != WC_OK)
         return WC_EINPUT;
     Q = C->in ? K->claim.pc + C->owner : K->mc + C->owner;
     if (read_index(c, v, C->in ? "piece_face" : "cone_face", Q->nfaces,
@@ -205,14 +207,15 @@ read_proofs(wc_check_reader * c, wc_check_set * K, const wc_json_node * root)
                              (unsigned long) K->claim.npieces);
     for (k = 0; k < K->proofs->len && c->status == WC_OK; k++)
     {
-        const wc_json_node * o = K->proofs->items + k, * st, * fa;
+        const wc_json_node * o = K->proofs->items + k, * st = NULL, * fa;
         const wc_check_piece * Q = K->claim.pc + k;
 
         if (_wc_check_want_object(c, o) != WC_OK
-            || _wc_check_member(c, o, "static", WC_CHECK_ARRAY, &st) != WC_OK
+            || (!K->plan && _wc_check_member(c, o, "static", WC_CHECK_ARRAY,
+                                             &st) != WC_OK)
             || _wc_check_member(c, o, "faces", WC_CHECK_ARRAY, &fa) != WC_OK)
             break;
-        if (st->len != Q->nrays + 2 * Q->nlines)
+        if (st != NULL && st->len != Q->nrays + 2 * Q->nlines)
             return _wc_check_bad(c, st, "'static' needs one force vector "
                                  "per ray and two per line (%lu)",
                                  (unsigned long) (Q->nrays + 2 * Q->nlines));
@@ -220,7 +223,7 @@ read_proofs(wc_check_reader * c, wc_check_set * K, const wc_json_node * root)
             return _wc_check_bad(c, fa, "'faces' needs one entry per face "
                                  "of the piece (%lu)",
                                  (unsigned long) Q->nfaces);
-        for (j = 0; j < st->len && c->status == WC_OK; j++)
+        for (j = 0; st != NULL && j < st->len && c->status == WC_OK; j++)
             if (_wc_check_set_read_mult(c, K, st->items + j) == WC_OK
                 && K->nmult != 2 * K->S.P.n)
                 return _wc_check_bad(c, st->items + j, "static forces have "
@@ -242,14 +245,16 @@ read_proofs(wc_check_reader * c, wc_check_set * K, const wc_json_node * root)
     return c->status;
 }
 
-/* The cone of each moving face, with its motions: closure (one per
-   generator) and motions (one per face: null or a motion).  */
+/* The cone of each moving face or plan string, with its motions: closure
+   (one per generator) and, for a moving face, motions (one per face: null
+   or a motion).  */
 static int
 read_moving(wc_check_reader * c, wc_check_set * K, const wc_json_node * root)
 {
     size_t k, j;
 
-    K->moving = _wc_json_object_get(root, "moving_faces");
+    K->moving = _wc_json_object_get(root, K->plan ? "strings"
+                                    : "moving_faces");
     K->mc = _wc_check_alloc(K->S.nfaces + 1, sizeof(wc_check_piece));
     if (K->mc == NULL)
         return _wc_check_nomem(c);
@@ -257,43 +262,75 @@ read_moving(wc_check_reader * c, wc_check_set * K, const wc_json_node * root)
            * sizeof(wc_check_piece));
     for (k = 0; k < K->S.nfaces && c->status == WC_OK; k++)
     {
-        const wc_json_node * o = K->moving->items + k, * cone, * cl, * mo;
+        const wc_json_node * o = K->moving->items + k, * cone, * cl;
+        const wc_json_node * mo = NULL;
         wc_check_piece * Q = K->mc + k;
 
         if (_wc_check_member(c, o, "cone", WC_CHECK_OBJECT, &cone) != WC_OK
             || _wc_check_read_piece(c, Q, cone) != WC_OK
             || _wc_check_member(c, o, "closure", WC_CHECK_ARRAY, &cl)
             != WC_OK
-            || _wc_check_member(c, o, "motions", WC_CHECK_ARRAY, &mo)
-            != WC_OK)
+            || (!K->plan && _wc_check_member(c, o, "motions",
+                                             WC_CHECK_ARRAY, &mo) != WC_OK))
             break;
         if (cl->len != Q->nrays + 2 * Q->nlines)
             return _wc_check_bad(c, cl, "'closure' needs one motion per ray "
                                  "and two per line of the cone (%lu)",
                                  (unsigned long) (Q->nrays + 2 * Q->nlines));
-        if (mo->len != Q->nfaces)
+        if (mo != NULL && mo->len != Q->nfaces)
             return _wc_check_bad(c, mo, "'motions' needs one entry per face "
                                  "of the cone (%lu)",
                                  (unsigned long) Q->nfaces);
         for (j = 0; j < cl->len && c->status == WC_OK; j++)
             _wc_check_set_read_motion(c, K, cl->items + j);
-        for (j = 0; j < mo->len && c->status == WC_OK; j++)
+        for (j = 0; mo != NULL && j < mo->len && c->status == WC_OK; j++)
             if (mo->items[j].type != WC_JSON_NULL)
                 _wc_check_set_read_motion(c, K, mo->items + j);
     }
     return c->status;
 }
 
+/* The set a certificate covers: "strong" (stability) or "goal" (plan).  */
+static const char *
+claim_key(const wc_check_set * K)
+{
+    return K->plan ? "goal" : "strong";
+}
+
 static int
-read_covers(wc_check_reader * c, const wc_json_node * root)
+read_covers(wc_check_reader * c, wc_check_set * K, const wc_json_node * root)
 {
     const wc_json_node * a;
 
     if (_wc_check_member(c, root, "covers", WC_CHECK_ARRAY, &a) != WC_OK)
         return WC_EINPUT;
     if (a->len != 1 || a->items[0].type != WC_JSON_STRING
-        || strcmp(a->items[0].text, "strong") != 0)
-        return _wc_check_bad(c, a, "'covers' must be [\"strong\"]");
+        || strcmp(a->items[0].text, claim_key(K)) != 0)
+        return _wc_check_bad(c, a, "'covers' must be [\"%s\"]",
+                             claim_key(K));
+    return WC_OK;
+}
+
+/* The strings of a plan into K->S.faces (their letters checked with the
+   claim, plansys.c).  */
+static int
+read_strings(wc_check_reader * c, wc_check_set * K, const wc_json_node * root)
+{
+    const wc_json_node * a;
+    size_t k;
+
+    if (_wc_check_member(c, root, "strings", WC_CHECK_ARRAY, &a) != WC_OK)
+        return WC_EINPUT;
+    K->S.faces = _wc_check_alloc(a->len + 1, sizeof(wc_check_face));
+    if (K->S.faces == NULL)
+        return _wc_check_nomem(c);
+    memset(K->S.faces, 0, (a->len + 1) * sizeof(wc_check_face));
+    K->S.nfaces = a->len;
+    for (k = 0; k < a->len; k++)
+        if (_wc_check_want_object(c, a->items + k) != WC_OK
+            || _wc_check_member(c, a->items + k, "string", WC_CHECK_STRING,
+                                &K->S.faces[k].sign) != WC_OK)
+            return WC_EINPUT;
     return WC_OK;
 }
 
@@ -303,8 +340,8 @@ _wc_check_set_read(wc_check_reader * c, wc_check_set * K, const wc_json_node * r
     size_t n2;
 
     if (_wc_check_read_problem(&K->S.P, c, root, 1) != WC_OK
-        || read_covers(c, root) != WC_OK
-        || _wc_check_read_claim(c, &K->claim, root, "strong") != WC_OK
+        || read_covers(c, K, root) != WC_OK
+        || _wc_check_read_claim(c, &K->claim, root, claim_key(K)) != WC_OK
         || read_planes(c, K, root) != WC_OK)
         return c->status;
     n2 = 2 * K->S.P.n;
@@ -317,10 +354,14 @@ _wc_check_set_read(wc_check_reader * c, wc_check_set * K, const wc_json_node * r
     if (K->cell.point == NULL || K->stat == NULL || K->cell.sep == NULL
         || K->S.nudot == NULL || K->S.motion_c == NULL)
         return _wc_check_nomem(c);
-    _wc_check_read_faces(c, &K->S, root, "moving_faces", 0);
-    if (c->status != WC_OK)
-        return c->status;
-    _wc_check_signs(c, &K->S);
+    if (K->plan)
+        read_strings(c, K, root);
+    else
+    {
+        _wc_check_read_faces(c, &K->S, root, "moving_faces", 0);
+        if (c->status == WC_OK)
+            _wc_check_signs(c, &K->S);
+    }
     if (c->status != WC_OK || read_moving(c, K, root) != WC_OK
         || _wc_check_member(c, root, "cells", WC_CHECK_ARRAY, &K->cells)
         != WC_OK)

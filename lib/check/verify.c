@@ -71,7 +71,8 @@ wc_verify_certificate(int * holds, char ** reason, char ** mode,
         status = _wc_check_bad(&c, _wc_json_object_get(&J->root, "kind"),
                                "expected a mode-feasibility certificate, "
                                "found kind '%s'", kind == WC_CHECK_SET
-                               ? WC_CHECK_KIND_SET
+                               ? WC_CHECK_KIND_SET : kind == WC_CHECK_PLAN
+                               ? WC_CHECK_KIND_PLAN
                                : WC_CHECK_KIND_STABILITY);
         goto cleanup;
     }
@@ -128,7 +129,8 @@ wc_verify(int * holds, char ** reason, char ** summary, const char * text,
         status = _wc_check_stability_certificate(&c, &J->root, &h, &why,
                                                  &what);
     else
-        status = _wc_check_set_certificate(&c, &J->root, &h, &why, &what);
+        status = _wc_check_set_certificate(&c, &J->root, kind == WC_CHECK_PLAN,
+                                           &h, &why, &what);
     if (status != WC_OK)
         goto cleanup;
     if (what.oom || what.s == NULL)

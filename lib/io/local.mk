@@ -5,7 +5,9 @@ lib_libwc_la_SOURCES += \
 	lib/io/print.c \
 	lib/io/cddwrite.c \
 	lib/io/stabprint.c \
+	lib/io/certprint.c \
 	lib/io/stabcertprint.c \
+	lib/io/plancertprint.c \
 	lib/io/planprint.c \
 	lib/io/fconeprint.c \
 	lib/io/compareprint.c
@@ -16,4 +18,5 @@ wcio_HEADERS = \
 	lib/io/compareprint.h
 noinst_HEADERS += \
 	lib/io/printutil.h \
-	lib/io/cddwrite.h
+	lib/io/cddwrite.h \
+	lib/io/certprint.h

@@ -1,5 +1,6 @@
-/* t-stabcert.c -- stability-set certificates (lib/analysis/stabcert.c,
-   lib/io/stabcertprint.c) round-trip through the checker (lib/check/).
+/* t-setcert.c -- the certificates of sets, stability-set and plan-goal
+   (lib/analysis/stabcert.c, plancert.c, lib/io/stabcertprint.c,
+   plancertprint.c), round-trip through the checker (lib/check/).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -8,9 +9,9 @@
    On random problems of 1 to 4 fixels (degenerate layouts included, see
    testutil.h) and on the example problems:
 
-   1. wc_stability_certificate_fprint writes a certificate that wc_verify
-      accepts (holds), whose claimed set is byte for byte the "strong"
-      object of stability --format=json;
+   1. wc_stability_certificate_fprint and wc_plan_certificate_fprint write
+      certificates that wc_verify accepts (holds), whose claimed set is
+      byte for byte the "strong" or "goal" object of the command's JSON;
    2. the same certificate with the weakly stable cone claimed in place of
       the strongly stable set is never accepted, whenever the two differ
       (the checker finds a piece face with a motion, or a cell it cannot
@@ -27,6 +28,7 @@
 
 #include "wrenchcone.h"
 #include "analysis/stability.h"
+#include "analysis/plan.h"
 #include "check/verify.h"
 #include "io/print.h"
 #include "testutil.h"
@@ -76,6 +78,39 @@ put_cert(FILE * f, const void * p)
     }
     wc_error_clear(err);
     return st;
+}
+
+typedef struct
+{
+    const wc_problem_struct * P;
+    const wc_plan_struct * R;
+}
+plan_job;
+
+static int
+put_plan_cert(FILE * f, const void * p)
+{
+    const plan_job * j = p;
+    wc_error_t err;
+    int st;
+
+    wc_error_init(err);
+    st = wc_plan_certificate_fprint(f, j->P, j->R, err);
+    if (st != WC_OK)
+    {
+        char * m = wc_error_format(err);
+
+        fprintf(stderr, "certificate: %s\n", m != NULL ? m : "?");
+        free(m);
+    }
+    wc_error_clear(err);
+    return st;
+}
+
+static int
+put_goal(FILE * f, const void * p)
+{
+    return wc_set_fprint_json(f, ((const wc_plan_struct *) p)->goal);
 }
 
 static int
@@ -252,6 +287,54 @@ load_data(wc_problem_t P, const char * name)
     return 1;
 }
 
+/* The plan of P: its certificate holds and claims the goal set as
+   printed; with the goal claimed empty when it is not, it does not.  */
+static void
+check_plan(const wc_problem_t P, const char * what, slong it)
+{
+    wc_plan_t R;
+    wc_error_t err;
+    plan_job j;
+    char * cert, * goal, * t;
+    size_t clen = 0, glen = 0, tlen = 0;
+    const char * at;
+    int r;
+
+    wc_plan_init(R);
+    wc_error_init(err);
+    if (wc_plan(R, P, 0, err) != WC_OK)
+        goto done;
+    j.P = P;
+    j.R = R;
+    cert = print_to_string(put_plan_cert, &j, &clen);
+    if (cert == NULL)
+        wctest_fail("%s %ld: no plan certificate", what, (long) it);
+    r = verify(cert, clen);
+    if (r != 1)
+        wctest_fail("%s %ld: the plan certificate %s:\n%s", what, (long) it,
+                    r < 0 ? "is malformed" : "does not hold", cert);
+    goal = print_to_string(put_goal, R, &glen);
+    at = strstr(cert, "\n \"goal\": ");
+    if (at == NULL || strncmp(at + 10, goal, glen) != 0)
+        wctest_fail("%s %ld: the claim is not the goal set as printed", what,
+                    (long) it);
+    if (!R->goal->empty)
+    {
+        t = splice(cert, clen, (size_t) (at + 10 - cert), glen,
+                   "{\"empty\": true, \"interior\": false, \"pieces\": []}",
+                   &tlen);
+        if (verify(t, tlen) == 1)
+            wctest_fail("%s %ld: claiming an empty goal holds", what,
+                        (long) it);
+        free(t);
+    }
+    free(cert);
+    free(goal);
+done:
+    wc_plan_clear(R);
+    wc_error_clear(err);
+}
+
 int
 main(void)
 {
@@ -259,17 +342,20 @@ main(void)
         "disk-two-fixels.wc", "disk-two-fixels-insert.wc", "section4.wc",
         "three-fixels.wc", "three-fixels-insert.wc", "peg-in-hole.wc"
     };
-    slong i, n = wctest_iters(40);
+    slong i, n = wctest_iters(30);
     size_t k;
 
-    wctest_init("t-stabcert");
+    wctest_init("t-setcert");
     for (k = 0; k < sizeof files / sizeof files[0]; k++)
     {
         wc_problem_t P;
 
         wc_problem_init(P);
         if (load_data(P, files[k]))
+        {
             check_problem(P, files[k], 0);
+            check_plan(P, files[k], 0);
+        }
         wc_problem_clear(P);
     }
     for (i = 0; i < n; i++)
@@ -281,6 +367,8 @@ main(void)
         wc_problem_init(P);
         wctest_random_problem(P, 1, 4);
         check_problem(P, "random problem", i);
+        if (P->n <= 3)
+            check_plan(P, "random plan", i);
         wc_problem_clear(P);
     }
     return 0;

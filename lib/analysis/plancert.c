@@ -1,0 +1,255 @@
+/* plancert.c -- the proof that a plan's goal set is exact.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   See plancert.h.  The system of a string x for the wrenches
+   sum alpha_i G_i is over z = (nudot, lambda, alpha), with the edges w_j
+   of the fixels where x has m, in fixel order, each the two edges
+   J_in -+ mu J_it of the plan model's cone (mu = max(mu_s, mu_k)):
+
+     M nudot - sum_j lambda_j w_j - sum_i alpha_i G_i = 0   (three rows)
+     J_in . nudot >= 0 where x has s, = 0 where it has m    (fixel order)
+     lambda_j >= 0,  alpha_i > 0
+
+   exactly as wrenchcone-certificate(5) gives it for the checker.  */
+
+#include <config.h>
+
+#include <flint/fmpq_vec.h>
+
+#include "exact/lp.h"
+#include "exact/vec3.h"
+#include "analysis/plancert.h"
+
+int
+_wc_plancert_init(_wc_plancert * C, const wc_problem_t P, const wc_plan_t R,
+                  wc_error_t err)
+{
+    const wc_cone_struct ** Q;
+    slong i, nq = R->goal->npieces + R->T->nneeded;
+    int status;
+
+    C->R = R;
+    _wc_stab_model_init(&C->m, P);
+    C->mu = _fmpq_vec_init(P->n + 1);
+    for (i = 0; i < P->n; i++)
+        fmpq_set(C->mu + i, fmpq_cmp(P->fixels[i].mu_s, P->fixels[i].mu_k)
+                 >= 0 ? P->fixels[i].mu_s : P->fixels[i].mu_k);
+    Q = flint_malloc(sizeof(wc_cone_struct *) * (nq + 1));
+    for (i = 0; i < nq; i++)
+        Q[i] = i < R->goal->npieces ? R->goal->pieces + i
+            : R->cones + (i - R->goal->npieces);
+    status = _wc_setcert_init(&C->base, R->cells, Q, nq, err);
+    flint_free(Q);
+    return status;
+}
+
+void
+_wc_plancert_clear(_wc_plancert * C)
+{
+    _fmpq_vec_clear(C->mu, C->m.n + 1);
+    _wc_stab_model_clear(&C->m);
+    _wc_setcert_clear(&C->base);
+}
+
+static int
+bug(wc_error_t err, const char * what)
+{
+    return _wc_setcert_bug(err, "goal set", what);
+}
+
+/* The string x's system for the ng wrenches G: 1 with a solution (for
+   ng = 1, nudot and the forces c of it when nudot is not NULL), 0 with
+   the multipliers in *mult when mult is not NULL, -1 on failure.  */
+static int
+string_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
+             _wc_plancert * C, const char * x, const fmpq * G, slong ng,
+             wc_error_t err)
+{
+    const _wc_stab_model * m = &C->m;
+    slong n = m->n, e = 0, i, j, k, r, nv;
+    fmpq_mat_t A;
+    wc_relation * rel;
+    fmpq * z, * y = NULL, ed[2], w[3];
+    int res;
+
+    for (i = 0; i < n; i++)
+        e += x[i] == 'm' ? 2 : 0;
+    nv = 3 + e + ng;
+    fmpq_mat_init(A, 3 + n + e + ng, nv);
+    rel = flint_malloc(sizeof(wc_relation) * (3 + n + e + ng));
+    z = _fmpq_vec_init(nv);
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_init(w + k);
+        fmpq_set(fmpq_mat_entry(A, k, k), m->M + k);
+        for (i = 0; i < ng; i++)
+            fmpq_neg(fmpq_mat_entry(A, k, 3 + e + i), G + 3 * i + k);
+        rel[k] = WC_REL_EQ;
+    }
+    fmpq_init(ed + 0);
+    fmpq_init(ed + 1);
+    fmpq_one(ed + 0);
+    for (i = 0, j = 0; i < n; i++)
+        for (r = 0; x[i] == 'm' && r < 2; r++, j++)
+        {
+            fmpq_set(ed + 1, C->mu + i);
+            if (r == 0)
+                fmpq_neg(ed + 1, ed + 1);
+            _wc_stab_edge_wrench(w, m, i, ed);
+            for (k = 0; k < 3; k++)
+                fmpq_neg(fmpq_mat_entry(A, k, 3 + j), w + k);
+        }
+    r = 3;
+    for (i = 0; i < n; i++)
+        if (x[i] == 's' || x[i] == 'm')
+        {
+            for (k = 0; k < 3; k++)
+                fmpq_set(fmpq_mat_entry(A, r, k), m->Jn + 3 * i + k);
+            rel[r++] = x[i] == 's' ? WC_REL_GE : WC_REL_EQ;
+        }
+    for (j = 0; j < e + ng; j++)
+    {
+        fmpq_one(fmpq_mat_entry(A, r, 3 + j));
+        rel[r++] = j < e ? WC_REL_GE : WC_REL_GT;
+    }
+    _wc_fmpq_mat_keep_rows(A, r);
+    if (mult != NULL)
+        y = _fmpq_vec_init(r);
+    res = _wc_lp_motzkin(z, y, A, rel, err);
+    if (res == 0 && mult != NULL)
+    {
+        *mult = y;
+        *nmult = r;
+        y = NULL;
+    }
+    if (y != NULL)
+        _fmpq_vec_clear(y, r);
+    if (res == 1 && ng == 1 && nudot != NULL)
+    {
+        /* nudot and c, scaled by alpha_1 */
+        for (k = 0; k < 3; k++)
+            fmpq_div(nudot + k, z + k, z + nv - 1);
+        _wc_qvec_zero(c, 2 * n);
+        for (i = 0, j = 0; i < n; i++)
+            for (r = 0; x[i] == 'm' && r < 2; r++, j++)
+            {
+                fmpq_div(ed + 0, z + 3 + j, z + nv - 1);
+                fmpq_add(c + i, c + i, ed + 0);
+                fmpq_mul(ed + 1, ed + 0, C->mu + i);
+                if (r == 0)
+                    fmpq_sub(c + n + i, c + n + i, ed + 1);
+                else
+                    fmpq_add(c + n + i, c + n + i, ed + 1);
+            }
+    }
+    for (k = 0; k < 3; k++)
+        fmpq_clear(w + k);
+    fmpq_clear(ed + 0);
+    fmpq_clear(ed + 1);
+    _fmpq_vec_clear(z, nv);
+    flint_free(rel);
+    fmpq_mat_clear(A);
+    return res;
+}
+
+static const char *
+needed(const _wc_plancert * C, slong j)
+{
+    return C->R->T->strings[C->R->T->needed[j]];
+}
+
+int
+_wc_plancert_cone(_wc_cone_proof * cp, _wc_plancert * C, slong j,
+                  wc_error_t err)
+{
+    const wc_cone_struct * Q = C->R->cones + j;
+    slong g;
+    int status = WC_OK, r;
+
+    cp->ngen = _wc_setcert_generators(&C->base, Q, -1);
+    cp->nfaces = Q->nfaces;
+    cp->closure = flint_malloc(sizeof(wc_motion_struct) * (cp->ngen + 1));
+    cp->motion = NULL;
+    cp->included = NULL;
+    for (g = 0; g < cp->ngen; g++)
+        _wc_motion_init(cp->closure + g, C->m.n);
+    for (g = 0; g < cp->ngen && status == WC_OK; g++)
+    {
+        r = string_solve(cp->closure[g].nudot, cp->closure[g].c, NULL, NULL,
+                         C, needed(C, j), C->base.F + 3 * g, 1, err);
+        if (r != 1)
+            status = r < 0 ? WC_EINTERNAL : bug(err, "has a string cone "
+                                                "that its string denies");
+    }
+    return status;
+}
+
+int
+_wc_plancert_piece(_wc_piece_proof * pp, _wc_plancert * C, slong k,
+                   wc_error_t err)
+{
+    const wc_cone_struct * Q = C->R->goal->pieces + k;
+    slong f, j, ng, ns = C->R->T->nneeded;
+    int status = WC_OK, r;
+
+    pp->ngen = 0;
+    pp->c = NULL;
+    pp->nfaces = Q->nfaces;
+    pp->mult = flint_calloc(Q->nfaces + 1, sizeof(fmpq **));
+    pp->nmult = flint_calloc(Q->nfaces + 1, sizeof(slong *));
+    for (f = 0; f < Q->nfaces && status == WC_OK; f++)
+    {
+        if (!Q->faces[f].included)
+            continue;
+        ng = _wc_setcert_generators(&C->base, Q, f);
+        pp->mult[f] = flint_calloc(ns + 1, sizeof(fmpq *));
+        pp->nmult[f] = flint_calloc(ns + 1, sizeof(slong));
+        for (j = 0; j < ns && status == WC_OK; j++)
+        {
+            r = string_solve(NULL, NULL, pp->mult[f] + j, pp->nmult[f] + j,
+                             C, needed(C, j), C->base.F, ng, err);
+            if (r != 0)
+                status = r < 0 ? WC_EINTERNAL : bug(err, "meets a string's "
+                                                    "cone");
+        }
+    }
+    return status;
+}
+
+int
+_wc_plancert_cell(_wc_cell_proof * pf, _wc_plancert * C, slong i,
+                  wc_error_t err)
+{
+    const wc_plan_struct * R = C->R;
+    slong k, j;
+    fmpq sum[3];
+    int status;
+
+    for (k = 0; k < 3; k++)
+        fmpq_init(sum + k);
+    pf->nrays = _wc_setcert_rays(&C->base, i, sum);
+    for (k = 0; k < R->goal->npieces; k++)
+        if (wc_cone_contains(R->goal->pieces + k, sum))
+            break;
+    if (k < R->goal->npieces)
+    {
+        pf->reason = WC_CELL_IN;
+        status = _wc_setcert_locate(pf, &C->base, R->goal->pieces + k, k,
+                                    sum, err);
+    }
+    else
+    {
+        pf->reason = WC_CELL_EXCLUDED;
+        for (j = 0; j < R->T->nneeded; j++)
+            if (wc_cone_contains(R->cones + j, sum))
+                break;
+        status = j == R->T->nneeded ? bug(err, "leaves out a cell")
+            : _wc_setcert_locate(pf, &C->base, R->cones + j, j, sum, err);
+    }
+    for (k = 0; k < 3; k++)
+        fmpq_clear(sum + k);
+    return status;
+}

@@ -1,0 +1,54 @@
+/* plancert.h -- internal: the proof that a plan's goal set G_goal is
+   exact (wrenchcone-certificate(5), PLAN GOAL SETS).  Private.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   G_goal is the set of wrenches in the cone of no plan string; the
+   strings that matter are those with exactly one s (every other string's
+   cone lies in one of theirs), and their cones W(x) are closed.  Each
+   included face F of a goal piece is proved to miss every W(x): Motzkin
+   multipliers showing that no sum alpha_i G_i, every alpha_i > 0, lies in
+   W(x).  Each W(x) is proved to hold its generators: a solution of the
+   string's system at each.  Each cell is placed in a face of a goal piece
+   or of a W(x) (setcert.h).  */
+
+#ifndef WC_PLANCERT_H
+#define WC_PLANCERT_H
+
+#include <flint/fmpq.h>
+
+#include "core/error.h"
+#include "analysis/plan.h"
+#include "analysis/stabmodel.h"
+#include "analysis/setcert.h"
+
+typedef struct
+{
+    _wc_setcert base;
+    const wc_plan_struct * R;
+    _wc_stab_model m;           /* J and M of every fixel */
+    fmpq * mu;                  /* n: max(mu_s, mu_k), the plan model */
+}
+_wc_plancert;
+
+int _wc_plancert_init(_wc_plancert * C, const wc_problem_t P,
+                      const wc_plan_t R, wc_error_t err);
+void _wc_plancert_clear(_wc_plancert * C);
+
+/* cp := the solutions at the generators of needed string j's cone
+   (cp->motion NULL: the cone is closed).  */
+int _wc_plancert_cone(_wc_cone_proof * cp, _wc_plancert * C, slong j,
+                      wc_error_t err);
+
+/* pp := the multipliers of every included face of goal piece k against
+   every needed string (pp->c NULL).  */
+int _wc_plancert_piece(_wc_piece_proof * pp, _wc_plancert * C, slong k,
+                       wc_error_t err);
+
+/* pf := the place of cell i.  */
+int _wc_plancert_cell(_wc_cell_proof * pf, _wc_plancert * C, slong i,
+                      wc_error_t err);
+
+#endif

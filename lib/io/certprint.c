@@ -1,0 +1,165 @@
+/* certprint.c -- the parts that the certificates of sets print alike.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.  */
+
+#include <config.h>
+
+#include <flint/fmpz_vec.h>
+
+#include "exact/vec3.h"
+#include "io/printutil.h"
+#include "io/print.h"
+#include "io/certprint.h"
+
+void
+_wc_fprint_scaled(FILE * out, const fmpq * v, slong len)
+{
+    fmpz_t l, g;
+    fmpz * z = _fmpz_vec_init(len + 1);
+    slong j;
+
+    fmpz_init(l);
+    fmpz_init(g);
+    fmpz_one(l);
+    for (j = 0; j < len; j++)
+        fmpz_lcm(l, l, fmpq_denref(v + j));
+    for (j = 0; j < len; j++)
+    {
+        fmpz_divexact(z + j, l, fmpq_denref(v + j));
+        fmpz_mul(z + j, z + j, fmpq_numref(v + j));
+    }
+    _fmpz_vec_content(g, z, len);
+    if (!fmpz_is_zero(g))
+        _fmpz_vec_scalar_divexact_fmpz(z, z, len, g);
+    _wc_fprint_zvec(out, z, len, 1);
+    _fmpz_vec_clear(z, len + 1);
+    fmpz_clear(l);
+    fmpz_clear(g);
+}
+
+void
+_wc_fprint_motion(FILE * out, const wc_motion_struct * a, slong n)
+{
+    fputs("{\"nudot\": ", out);
+    wc_fprint_qvec(out, a->nudot, 3, 1);
+    fputs(", \"c\": ", out);
+    wc_fprint_qvec(out, a->c, 2 * n, 1);
+    fputc('}', out);
+}
+
+void
+_wc_fprint_cone_proof(FILE * out, const _wc_cone_proof * cp, slong n)
+{
+    slong g, f;
+
+    fputs(",\n   \"closure\": [", out);
+    for (g = 0; g < cp->ngen; g++)
+    {
+        if (g > 0)
+            fputs(", ", out);
+        _wc_fprint_motion(out, cp->closure + g, n);
+    }
+    fputc(']', out);
+    if (cp->motion == NULL)
+        return;
+    fputs(",\n   \"motions\": [", out);
+    for (f = 0; f < cp->nfaces; f++)
+    {
+        if (f > 0)
+            fputs(", ", out);
+        if (cp->included[f])
+            _wc_fprint_motion(out, cp->motion + f, n);
+        else
+            fputs("null", out);
+    }
+    fputc(']', out);
+}
+
+void
+_wc_fprint_piece_proof(FILE * out, const _wc_piece_proof * pp, slong nexcl,
+                       slong n)
+{
+    slong g, f, j;
+
+    putc('{', out);
+    if (pp->c != NULL)
+    {
+        fputs("\"static\": [", out);
+        for (g = 0; g < pp->ngen; g++)
+        {
+            if (g > 0)
+                fputs(", ", out);
+            wc_fprint_qvec(out, pp->c + g * 2 * n, 2 * n, 1);
+        }
+        fputs("],\n   ", out);
+    }
+    fputs("\"faces\": [", out);
+    for (f = 0; f < pp->nfaces; f++)
+    {
+        fputs(f > 0 ? ",\n    " : "\n    ", out);
+        if (pp->mult[f] == NULL)
+        {
+            fputs("null", out);
+            continue;
+        }
+        putc('[', out);
+        for (j = 0; j < nexcl; j++)
+        {
+            if (j > 0)
+                fputs(", ", out);
+            _wc_fprint_scaled(out, pp->mult[f][j], pp->nmult[f][j]);
+        }
+        putc(']', out);
+    }
+    fputs("]}", out);
+}
+
+void
+_wc_fprint_planes(FILE * out, const wc_cells_t A)
+{
+    slong i;
+
+    fputs(",\n \"planes\": [", out);
+    for (i = 0; i < A->nplanes; i++)
+    {
+        if (i > 0)
+            fputs(", ", out);
+        _wc_fprint_zvec(out, WC_ROW(A->planes, i), 3, 1);
+    }
+    fputc(']', out);
+}
+
+void
+_wc_fprint_cell_proof(FILE * out, const _wc_cell_proof * pf,
+                      const fmpz * point, const char * excluded)
+{
+    slong j;
+
+    fputs("{\"point\": ", out);
+    _wc_fprint_zvec(out, point, 3, 1);
+    fprintf(out, ", \"in\": %s", _wc_tf(pf->reason == WC_CELL_IN));
+    if (pf->reason == WC_CELL_NOT_WEAK)
+    {
+        fputs(", \"separator\": ", out);
+        _wc_fprint_scaled(out, pf->sep, 3);
+    }
+    else
+    {
+        fprintf(out, ", \"%s\": %ld, \"%s\": %ld, \"sum\": ",
+                pf->reason == WC_CELL_IN ? "piece" : excluded,
+                (long) pf->owner, pf->reason == WC_CELL_IN
+                ? "piece_face" : "cone_face", (long) pf->face);
+        wc_fprint_qvec(out, pf->alpha, pf->ngen, 1);
+        fputs(", \"rays\": [", out);
+        for (j = 0; j < pf->nrays; j++)
+        {
+            if (j > 0)
+                fputs(", ", out);
+            wc_fprint_qvec(out, pf->beta + j * pf->ngen, pf->ngen, 1);
+        }
+        fputc(']', out);
+    }
+    fputc('}', out);
+}
