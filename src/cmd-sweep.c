@@ -30,12 +30,14 @@ const char cmd_sweep_usage[] =
     "                   (default 1/1000)\n"
     "  --max-friction=M give up above M, at most 2^32 (default 1024):\n"
     "                   G_goal is then nonempty at every mu <= M\n"
+    "  --certificate=FILE  with --critical, also write a certificate (JSON)\n"
+    "                   of the bracket, for wrenchcone verify\n"
     "  --format=FMT     text (default) or json\n"
     "  -h, --help       print this help and exit\n"
     "  -V, --version    print versions and exit\n";
 
 enum { OPT_FORMAT = 256, OPT_FRICTION, OPT_CRITICAL, OPT_WIDTH,
-       OPT_MAXFRICTION };
+       OPT_MAXFRICTION, OPT_CERT };
 
 const struct option cmd_sweep_options[] = {
     { "format", required_argument, NULL, OPT_FORMAT },
@@ -43,6 +45,7 @@ const struct option cmd_sweep_options[] = {
     { "critical", no_argument, NULL, OPT_CRITICAL },
     { "width", required_argument, NULL, OPT_WIDTH },
     { "max-friction", required_argument, NULL, OPT_MAXFRICTION },
+    { "certificate", required_argument, NULL, OPT_CERT },
     { NULL, 0, NULL, 0 }
 };
 
@@ -53,6 +56,7 @@ typedef struct
     int critical;               /* --critical */
     const char * width;         /* --width=W */
     const char * max_friction;  /* --max-friction=M */
+    const char * certificate;   /* --certificate=FILE */
 }
 sweep_options;
 
@@ -106,6 +110,9 @@ parse(sweep_options * o, const cli_command * self, int argc, char ** argv)
             break;
         case OPT_MAXFRICTION:
             o->max_friction = optarg;
+            break;
+        case OPT_CERT:
+            o->certificate = optarg;
             break;
         }
     o->json = fmt == FMT_JSON;
@@ -402,6 +409,22 @@ print_answer(const answer * a, const wc_problem_t P, const sweep_options * o)
         fputs("}\n", stdout);
 }
 
+typedef struct
+{
+    const wc_problem_struct * P;
+    const wc_critical_struct * C;
+    wc_error_struct * err;
+}
+cert_job;
+
+static int
+put_certificate(FILE * f, const void * p)
+{
+    const cert_job * j = p;
+
+    return wc_critical_certificate_fprint(f, j->P, j->C, j->err);
+}
+
 int
 cmd_sweep(const cli_command * self, int argc, char ** argv)
 {
@@ -420,13 +443,26 @@ cmd_sweep(const cli_command * self, int argc, char ** argv)
     if (o.friction == NULL && !o.critical)
         return cli_usage_error("sweep", "sweep needs --friction=LIST or "
                                "--critical%s", "");
+    if (o.certificate != NULL && !o.critical)
+        return cli_usage_error("sweep", "--certificate certifies the "
+                               "bracket of --critical%s", "");
     wc_problem_init(P);
     wc_error_init(err);
     answer_init(&a);
     status = cli_load_problem(P, argv[optind], err);
     if (status == WC_OK)
         status = compute(&a, P, &o, err);
-    if (status != WC_OK)
+    if (status == WC_OK && o.certificate != NULL)
+    {
+        cert_job j = { P, a.crit.C, err };
+
+        status = cli_write_certificate(o.certificate, put_certificate, &j);
+        if (status != WC_OK && err->message == NULL)
+            status = -status;       /* reported already */
+    }
+    if (status < 0)
+        status = -status;
+    else if (status != WC_OK)
         cli_report(err, status);
     else
     {

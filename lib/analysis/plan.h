@@ -263,6 +263,13 @@ int wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json);
 int wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
                                const wc_plan_t R, wc_error_t err);
 
+/* Write the certificate of the critical bracket C of P (kind
+   "critical-friction", wrenchcone-certificate(5)): the witness at lo in
+   G_goal with multipliers for every string, and a plan-goal certificate
+   that G_goal is empty at hi.  Returns as wc_plan_certificate_fprint.  */
+int wc_critical_certificate_fprint(FILE * out, const wc_problem_t P,
+                                   const wc_critical_t C, wc_error_t err);
+
 /* One friction value of a sweep: a JSON object (no newline) or a few
    lines of text.  */
 int wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,

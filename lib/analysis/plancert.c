@@ -23,6 +23,16 @@
 #include "exact/vec3.h"
 #include "analysis/plancert.h"
 
+void
+_wc_plan_model_mu(fmpq * mu, const wc_problem_t P)
+{
+    slong i;
+
+    for (i = 0; i < P->n; i++)
+        fmpq_set(mu + i, fmpq_cmp(P->fixels[i].mu_s, P->fixels[i].mu_k)
+                 >= 0 ? P->fixels[i].mu_s : P->fixels[i].mu_k);
+}
+
 int
 _wc_plancert_init(_wc_plancert * C, const wc_problem_t P, const wc_plan_t R,
                   wc_error_t err)
@@ -34,9 +44,7 @@ _wc_plancert_init(_wc_plancert * C, const wc_problem_t P, const wc_plan_t R,
     C->R = R;
     _wc_stab_model_init(&C->m, P);
     C->mu = _fmpq_vec_init(P->n + 1);
-    for (i = 0; i < P->n; i++)
-        fmpq_set(C->mu + i, fmpq_cmp(P->fixels[i].mu_s, P->fixels[i].mu_k)
-                 >= 0 ? P->fixels[i].mu_s : P->fixels[i].mu_k);
+    _wc_plan_model_mu(C->mu, P);
     Q = flint_malloc(sizeof(wc_cone_struct *) * (nq + 1));
     for (i = 0; i < nq; i++)
         Q[i] = i < R->goal->npieces ? R->goal->pieces + i
@@ -60,15 +68,12 @@ bug(wc_error_t err, const char * what)
     return _wc_setcert_bug(err, "goal set", what);
 }
 
-/* The string x's system for the ng wrenches G: 1 with a solution (for
-   ng = 1, nudot and the forces c of it when nudot is not NULL), 0 with
-   the multipliers in *mult when mult is not NULL, -1 on failure.  */
-static int
-string_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
-             _wc_plancert * C, const char * x, const fmpq * G, slong ng,
-             wc_error_t err)
+int
+_wc_plan_string_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
+                      const _wc_stab_model * m, const fmpq * mu,
+                      const char * x, const fmpq * G, slong ng,
+                      wc_error_t err)
 {
-    const _wc_stab_model * m = &C->m;
     slong n = m->n, e = 0, i, j, k, r, nv;
     fmpq_mat_t A;
     wc_relation * rel;
@@ -95,7 +100,7 @@ string_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
     for (i = 0, j = 0; i < n; i++)
         for (r = 0; x[i] == 'm' && r < 2; r++, j++)
         {
-            fmpq_set(ed + 1, C->mu + i);
+            fmpq_set(ed + 1, mu + i);
             if (r == 0)
                 fmpq_neg(ed + 1, ed + 1);
             _wc_stab_edge_wrench(w, m, i, ed);
@@ -138,7 +143,7 @@ string_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
             {
                 fmpq_div(ed + 0, z + 3 + j, z + nv - 1);
                 fmpq_add(c + i, c + i, ed + 0);
-                fmpq_mul(ed + 1, ed + 0, C->mu + i);
+                fmpq_mul(ed + 1, ed + 0, mu + i);
                 if (r == 0)
                     fmpq_sub(c + n + i, c + n + i, ed + 1);
                 else
@@ -178,8 +183,9 @@ _wc_plancert_cone(_wc_cone_proof * cp, _wc_plancert * C, slong j,
         _wc_motion_init(cp->closure + g, C->m.n);
     for (g = 0; g < cp->ngen && status == WC_OK; g++)
     {
-        r = string_solve(cp->closure[g].nudot, cp->closure[g].c, NULL, NULL,
-                         C, needed(C, j), C->base.F + 3 * g, 1, err);
+        r = _wc_plan_string_solve(cp->closure[g].nudot, cp->closure[g].c,
+                                  NULL, NULL, &C->m, C->mu, needed(C, j),
+                                  C->base.F + 3 * g, 1, err);
         if (r != 1)
             status = r < 0 ? WC_EINTERNAL : bug(err, "has a string cone "
                                                 "that its string denies");
@@ -209,8 +215,9 @@ _wc_plancert_piece(_wc_piece_proof * pp, _wc_plancert * C, slong k,
         pp->nmult[f] = flint_calloc(ns + 1, sizeof(slong));
         for (j = 0; j < ns && status == WC_OK; j++)
         {
-            r = string_solve(NULL, NULL, pp->mult[f] + j, pp->nmult[f] + j,
-                             C, needed(C, j), C->base.F, ng, err);
+            r = _wc_plan_string_solve(NULL, NULL, pp->mult[f] + j,
+                                      pp->nmult[f] + j, &C->m, C->mu,
+                                      needed(C, j), C->base.F, ng, err);
             if (r != 0)
                 status = r < 0 ? WC_EINTERNAL : bug(err, "meets a string's "
                                                     "cone");

@@ -33,6 +33,20 @@ typedef struct
 }
 _wc_plancert;
 
+/* mu (P->n) := max(mu_s, mu_k) at each fixel: the plan model's
+   friction.  */
+void _wc_plan_model_mu(fmpq * mu, const wc_problem_t P);
+
+/* The system of string x (plancert.c) for the ng wrenches G, with the
+   model m and the friction mu: 1 with a solution (for ng = 1, nudot and
+   its forces c, 2 n, when nudot is not NULL), 0 with the multipliers in
+   *mult (malloc'd, *nmult of them) when mult is not NULL, -1 on failure
+   (err set).  */
+int _wc_plan_string_solve(fmpq * nudot, fmpq * c, fmpq ** mult,
+                          slong * nmult, const _wc_stab_model * m,
+                          const fmpq * mu, const char * x, const fmpq * G,
+                          slong ng, wc_error_t err);
+
 int _wc_plancert_init(_wc_plancert * C, const wc_problem_t P,
                       const wc_plan_t R, wc_error_t err);
 void _wc_plancert_clear(_wc_plancert * C);

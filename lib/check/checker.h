@@ -128,7 +128,8 @@ typedef enum
     WC_CHECK_MODE = 0,          /* "mode-feasibility" or no "kind" */
     WC_CHECK_STABILITY = 1,     /* "strong-stability" */
     WC_CHECK_SET = 2,           /* "stability-set" */
-    WC_CHECK_PLAN = 3           /* "plan-goal" */
+    WC_CHECK_PLAN = 3,          /* "plan-goal" */
+    WC_CHECK_CRIT = 4           /* "critical-friction" */
 }
 wc_check_kind;
 
@@ -442,6 +443,7 @@ int _wc_check_stability_certificate(wc_check_reader * c,
 
 #define WC_CHECK_KIND_SET "stability-set"
 #define WC_CHECK_KIND_PLAN "plan-goal"
+#define WC_CHECK_KIND_CRIT "critical-friction"
 
 /* One piece of a claimed set (or a moving face's cone): the closure
    {a . x <= 0, e . x = 0}, its rays and lines, its faces (rays, dim,
@@ -551,6 +553,12 @@ int _wc_check_plan_face(wc_check_scratch * X, size_t k, const char * x,
 /* The solution (S->nudot, S->motion_c) puts the wrench S->g in the cone
    of the plan string x.  1 or 0.  */
 int _wc_check_plan_motion(wc_check_scratch * X, const char * x);
+
+/* Check the critical-friction certificate at root (its kind read)
+   (critcheck.c).  */
+int _wc_check_crit_certificate(wc_check_reader * c,
+                               const wc_json_node * root, int * holds,
+                               wc_check_text * why, wc_check_text * what);
 
 /* Check the stability-set certificate (plan 0) or the plan-goal one
    (plan 1) at root (its kind read).  */

@@ -23,7 +23,8 @@ lib_libwccheck_la_SOURCES += \
 	lib/check/setread.c \
 	lib/check/setdoc.c \
 	lib/check/setcheck.c \
-	lib/check/plansys.c
+	lib/check/plansys.c \
+	lib/check/critcheck.c
 wccheckdir = $(pkgincludedir)/check
 wccheck_HEADERS = \
 	lib/check/verify.h

@@ -284,6 +284,11 @@ _wc_check_kind(wc_check_reader * c, const wc_json_node * root,
         *kind = WC_CHECK_PLAN;
         return WC_OK;
     }
+    if (is_word(k->text, k->len, WC_CHECK_KIND_CRIT))
+    {
+        *kind = WC_CHECK_CRIT;
+        return WC_OK;
+    }
     return _wc_check_bad_quoting(c, k, "unknown certificate kind '%s'",
                                  k->text, k->len);
 }

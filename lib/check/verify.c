@@ -18,7 +18,8 @@
    The files: checker.h (what they share), gmpvec.c, textbuf.c,
    motzkin.c, read.c, problem.c; feasible.c (mode feasibility);
    stabread.c, stabcheck.c, faces.c, facecheck.c (strong stability);
-   arrcells.c, setread.c, setcheck.c (stability sets).  */
+   arrcells.c, setread.c, setdoc.c, setcheck.c (stability sets), plansys.c
+   (plan goal sets), critcheck.c (critical friction).  */
 
 #include <stdlib.h>
 
@@ -72,7 +73,8 @@ wc_verify_certificate(int * holds, char ** reason, char ** mode,
                                "expected a mode-feasibility certificate, "
                                "found kind '%s'", kind == WC_CHECK_SET
                                ? WC_CHECK_KIND_SET : kind == WC_CHECK_PLAN
-                               ? WC_CHECK_KIND_PLAN
+                               ? WC_CHECK_KIND_PLAN : kind == WC_CHECK_CRIT
+                               ? WC_CHECK_KIND_CRIT
                                : WC_CHECK_KIND_STABILITY);
         goto cleanup;
     }
@@ -128,6 +130,8 @@ wc_verify(int * holds, char ** reason, char ** summary, const char * text,
     else if (kind == WC_CHECK_STABILITY)
         status = _wc_check_stability_certificate(&c, &J->root, &h, &why,
                                                  &what);
+    else if (kind == WC_CHECK_CRIT)
+        status = _wc_check_crit_certificate(&c, &J->root, &h, &why, &what);
     else
         status = _wc_check_set_certificate(&c, &J->root, kind == WC_CHECK_PLAN,
                                            &h, &why, &what);

@@ -116,3 +116,111 @@ wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
     return ferror(out) ? wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                       "write error") : WC_OK;
 }
+
+/* Q := P with mu_s = mu_k = mu at every fixel (the sweep's problem).  */
+static int
+at_friction(wc_problem_t Q, const wc_problem_t P, const fmpq_t mu)
+{
+    slong i;
+    int status = wc_problem_set(Q, P);
+
+    for (i = 0; i < Q->n && status == WC_OK; i++)
+    {
+        fmpq_set(Q->fixels[i].mu_s, mu);
+        fmpq_set(Q->fixels[i].mu_k, mu);
+    }
+    return status;
+}
+
+/* "lower": the witness at lo and, for every string with one s, the
+   multipliers showing it is not in the string's cone.  */
+static int
+put_lower(FILE * out, const wc_problem_t Q, const fmpq * g, wc_error_t err)
+{
+    wc_plan_strings_t T;
+    _wc_stab_model m;
+    fmpq * mu = _fmpq_vec_init(Q->n + 1), * mult = NULL;
+    slong j, nmult = 0;
+    int status, r;
+
+    wc_plan_strings_init(T);
+    _wc_stab_model_init(&m, Q);
+    _wc_plan_model_mu(mu, Q);
+    status = wc_plan_strings(T, Q->n, err);
+    fputs("{\"wrench\": ", out);
+    wc_fprint_qvec(out, g, 3, 1);
+    fputs(",\n  \"strings\": [", out);
+    for (j = 0; j < T->nneeded && status == WC_OK; j++)
+    {
+        const char * x = T->strings[T->needed[j]];
+
+        r = _wc_plan_string_solve(NULL, NULL, &mult, &nmult, &m, mu, x, g, 1,
+                                  err);
+        if (r != 0)
+        {
+            status = r < 0 ? WC_EINTERNAL : _wc_setcert_bug(err, "critical "
+                                                            "friction's "
+                                                            "witness", "is "
+                                                            "in a string's "
+                                                            "cone");
+            break;
+        }
+        fputs(j > 0 ? ",\n   " : "\n   ", out);
+        fputs("{\"string\": ", out);
+        wc_fprint_json_string(out, x);
+        fputs(", \"multipliers\": ", out);
+        _wc_fprint_scaled(out, mult, nmult);
+        fputc('}', out);
+        _fmpq_vec_clear(mult, nmult);
+        mult = NULL;
+    }
+    fputs("]}", out);
+    _fmpq_vec_clear(mu, Q->n + 1);
+    _wc_stab_model_clear(&m);
+    wc_plan_strings_clear(T);
+    return status;
+}
+
+int
+wc_critical_certificate_fprint(FILE * out, const wc_problem_t P,
+                               const wc_critical_t C, wc_error_t err)
+{
+    wc_problem_t Q;
+    wc_plan_t R;
+    int status;
+
+    wc_problem_init(Q);
+    wc_plan_init(R);
+    fputs("{\"kind\": \"critical-friction\",\n \"problem\": ", out);
+    _wc_fprint_dyn_problem(out, P);
+    fprintf(out, ",\n \"found\": %s, \"empty_at_zero\": %s, \"lo\": ",
+            _wc_tf(C->found), _wc_tf(C->empty_at_zero));
+    _wc_fprint_jq(out, C->lo);
+    fputs(", \"hi\": ", out);
+    if (C->found)
+        _wc_fprint_jq(out, C->hi);
+    else
+        fputs("null", out);
+    fputs(",\n \"lower\": ", out);
+    status = WC_OK;
+    if (C->empty_at_zero)
+        fputs("null", out);
+    else if ((status = at_friction(Q, P, C->lo)) == WC_OK)
+        status = put_lower(out, Q, C->lo_witness, err);
+    if (status == WC_OK)
+        fputs(",\n \"upper\": ", out);
+    if (status == WC_OK && !C->found)
+        fputs("null}\n", out);
+    else if (status == WC_OK
+             && (status = at_friction(Q, P, C->hi)) == WC_OK
+             && (status = wc_plan(R, Q, 0, err)) == WC_OK
+             && (status = wc_plan_certificate_fprint(out, Q, R, err))
+             == WC_OK)
+        fputs("}\n", out);
+    wc_plan_clear(R);
+    wc_problem_clear(Q);
+    if (status != WC_OK)
+        return status;
+    return ferror(out) ? wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                      "write error") : WC_OK;
+}
