@@ -225,4 +225,32 @@ PY
     && grep -q '^  complete plan: rejected: the goal state can lose a contact$' "$tmp/t" \
     || fail "plan mu_k > mu_s text: $(cat "$tmp/t" "$tmp/e")"
 
+# Certificates of G_goal and of the critical bracket: they hold, the claim
+# is the set printed, and a changed end does not hold.
+for f in disk-two-fixels-insert three-fixels-insert peg-in-hole; do
+    "$W" plan --certificate="$tmp/g.json" "$D/$f.wc" > /dev/null 2> "$tmp/e" \
+        || fail "plan --certificate $f: exit $?: $(cat "$tmp/e")"
+    "$W" verify "$tmp/g.json" > "$tmp/v" 2>&1 \
+        && grep -q '^certificate holds: the goal set is exact: ' "$tmp/v" \
+        || fail "verify plan certificate $f: $(cat "$tmp/v")"
+done
+"$W" plan --format=json "$D/three-fixels-insert.wc" > "$tmp/p"
+"$W" plan --certificate="$tmp/g.json" "$D/three-fixels-insert.wc" > /dev/null
+python3 - "$tmp/p" "$tmp/g.json" <<'PY' || fail "plan certificate claim"
+import json, sys
+assert json.load(open(sys.argv[2]))["goal"] == json.load(open(sys.argv[1]))["goal"]
+PY
+"$W" sweep --critical --certificate="$tmp/c.json" "$D/three-fixels-insert.wc" > /dev/null 2> "$tmp/e" \
+    || fail "sweep --certificate: exit $?: $(cat "$tmp/e")"
+"$W" verify "$tmp/c.json" > "$tmp/v" 2>&1
+[ "$(cat "$tmp/v")" = "certificate holds: the critical friction lies in [187/512, 375/1024]: G_goal is nonempty at mu = lo and empty at mu = hi" ] \
+    || fail "verify critical certificate: $(cat "$tmp/v")"
+sed 's|"lo": "187/512"|"lo": "3/8"|' "$tmp/c.json" > "$tmp/c2.json"
+"$W" verify "$tmp/c2.json" > "$tmp/v" 2>&1
+[ $? -eq 4 ] || fail "a critical certificate with lo moved up holds: $(cat "$tmp/v")"
+"$W" plan --certificate="$tmp/x.json" "$D/disk-two-fixels-insert.wc" 0 -1 0 > "$tmp/o" 2> "$tmp/e"
+[ $? -eq 2 ] && [ ! -s "$tmp/o" ] || fail "plan --certificate with a wrench: not a usage error"
+"$W" sweep --friction=1/5 --certificate="$tmp/x.json" "$D/disk-two-fixels-insert.wc" > "$tmp/o" 2> "$tmp/e"
+[ $? -eq 2 ] && [ ! -s "$tmp/o" ] || fail "sweep --certificate without --critical: not a usage error"
+
 exit $failed
