@@ -1,7 +1,7 @@
 # bench -- the benchmarks (make bench; not part of make check).
 
 EXTRA_PROGRAMS += bench/bench-cone bench/bench-modes bench/bench-double \
-	bench/bench-stability bench/bench-plan
+	bench/bench-stability bench/bench-plan bench/bench-cert
 bench_bench_cone_SOURCES = bench/bench-cone.c
 bench_bench_cone_LDADD = $(TEST_LIBS)
 bench_bench_modes_SOURCES = bench/bench-modes.c
@@ -13,9 +13,11 @@ bench_bench_stability_SOURCES = bench/bench-stability.c
 bench_bench_stability_LDADD = lib/libwc.la
 bench_bench_plan_SOURCES = bench/bench-plan.c
 bench_bench_plan_LDADD = lib/libwc.la
+bench_bench_cert_SOURCES = bench/bench-cert.c
+bench_bench_cert_LDADD = lib/libwc.la
 BENCH = bench/bench-cone$(EXEEXT) bench/bench-modes$(EXEEXT) \
 	bench/bench-double$(EXEEXT) bench/bench-stability$(EXEEXT) \
-	bench/bench-plan$(EXEEXT)
+	bench/bench-plan$(EXEEXT) bench/bench-cert$(EXEEXT)
 bench: $(BENCH)
 	for b in $(BENCH); do ./$$b || exit 1; done
 .PHONY: bench
