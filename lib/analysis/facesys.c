@@ -334,3 +334,109 @@ _wc_face_solve_cone(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
     facesys_clear(&s);
     return r;
 }
+
+/* ---------------------------------------------------------------------
+   Multipliers from a facet.  When a plane h . g = 0 has the face's cone
+   W on its side h . g <= 0 and every G_i on the other, h . G_i >= 0 with
+   one > 0, the multipliers need no LP: h on the three = rows (their sum
+   is (M h) . nudot - sum_j (h . w_j) lambda_j - sum_i (h . G_i) alpha_i),
+   h . w_j on each lambda row and h . G_i on each alpha row (both >= 0:
+   -w_j is in W), and on the rows on nudot mu with sum_r mu_r row_r =
+   -M h, mu >= 0 off the = rows -- which exists since (M h) . v <= 0 for
+   every v of the closed face (Farkas), and is a point of a cone in R^3
+   (exact/lp.h's simplex).  */
+
+/* 1 with y (s->rows) filled and checked; 0 when h does not separate or
+   the multipliers fail (the caller then solves the LP); -1 on failure.  */
+static int
+facet_mult(fmpq * y, const facesys * s, const _wc_stab_model * m,
+           const fmpq * h, slong ng, wc_error_t err)
+{
+    slong nv = 3 + s->e + ng, nmot = s->rows - 3 - s->e - ng, r, k, j, q;
+    fmpq * gen = _fmpq_vec_init(3 * 2 * nmot + 3);
+    fmpq * lam = _fmpq_vec_init(2 * nmot + 1), * sum = _fmpq_vec_init(nv);
+    fmpq t[3], sep[3];
+    int ok = 1, strict = 0, res;
+
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_init(t + k);
+        fmpq_init(sep + k);
+        fmpq_set(y + k, h + k);
+    }
+    /* h . w_j and h . G_i: minus h times their columns in the = rows */
+    for (j = 3; j < nv && ok; j++)
+    {
+        fmpq_zero(t + 0);
+        for (k = 0; k < 3; k++)
+            fmpq_submul(t + 0, h + k, fmpq_mat_entry(s->A, k, j));
+        ok = fmpq_sgn(t + 0) >= 0;
+        strict |= j >= 3 + s->e && fmpq_sgn(t + 0) > 0;
+        fmpq_set(y + 3 + nmot + (j - 3), t + 0);
+    }
+    ok &= strict;
+    /* -M h as mu on the rows on nudot: each row, and its negative for =  */
+    for (r = 0, q = 0; ok && r < nmot; r++)
+        for (j = 0; j < (s->rel[3 + r] == WC_REL_EQ ? 2 : 1); j++, q++)
+            for (k = 0; k < 3; k++)
+                if (j == 0)
+                    fmpq_set(gen + 3 * q + k,
+                             fmpq_mat_entry(s->A, 3 + r, k));
+                else
+                    fmpq_neg(gen + 3 * q + k,
+                             fmpq_mat_entry(s->A, 3 + r, k));
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_mul(t + k, m->M + k, h + k);
+        fmpq_neg(t + k, t + k);
+    }
+    res = ok ? _wc_lp_cone3(lam, sep, gen, q, t, err) : 0;
+    for (r = 0, q = 0; res == 1 && r < nmot; r++)
+    {
+        fmpq_set(y + 3 + r, lam + q++);
+        if (s->rel[3 + r] == WC_REL_EQ)
+            fmpq_sub(y + 3 + r, y + 3 + r, lam + q++);
+    }
+    /* the check: every sign, and the rows summing to zero */
+    for (r = 0; res == 1 && r < s->rows; r++)
+    {
+        if (s->rel[r] != WC_REL_EQ && fmpq_sgn(y + r) < 0)
+            res = 0;
+        for (j = 0; j < nv; j++)
+            fmpq_addmul(sum + j, y + r, fmpq_mat_entry(s->A, r, j));
+    }
+    if (res == 1 && !_wc_qvec_is_zero(sum, nv))
+        res = 0;
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_clear(t + k);
+        fmpq_clear(sep + k);
+    }
+    _fmpq_vec_clear(gen, 3 * 2 * nmot + 3);
+    _fmpq_vec_clear(lam, 2 * nmot + 1);
+    _fmpq_vec_clear(sum, nv);
+    return res;
+}
+
+int
+_wc_face_facet_mult(fmpq ** mult, slong * nmult, const _wc_stab_model * m,
+                    const char * y, int rot, const fmpq * h,
+                    const fmpq * G, slong ng, wc_error_t err)
+{
+    facesys s;
+    fmpq * v;
+    int r;
+
+    facesys_init(&s, m, y, y, rot, G, ng, 0);
+    v = _fmpq_vec_init(s.rows);
+    r = facet_mult(v, &s, m, h, ng, err);
+    if (r == 1)
+    {
+        *mult = v;
+        *nmult = s.rows;
+    }
+    else
+        _fmpq_vec_clear(v, s.rows);
+    facesys_clear(&s);
+    return r;
+}

@@ -38,4 +38,15 @@ int _wc_face_solve_cone(fmpq * nudot, fmpq * c, fmpq ** mult,
                         const fmpq * G, slong ng, int closed,
                         wc_error_t err);
 
+/* The multipliers of the face (y, rot) (force letters y too) for the
+   wrenches sum alpha_i G_i, alpha_i > 0, built from a plane h . g = 0
+   with the face's cone on the side h . g <= 0 and the G_i on the other
+   (h . G_i >= 0, one > 0), without an LP: 1 with *mult (malloc'd,
+   *nmult entries, checked against the rows); 0 when h does not serve;
+   -1 on failure (err set).  */
+int _wc_face_facet_mult(fmpq ** mult, slong * nmult,
+                        const _wc_stab_model * m, const char * y, int rot,
+                        const fmpq * h, const fmpq * G, slong ng,
+                        wc_error_t err);
+
 #endif

@@ -64,6 +64,40 @@ bug(wc_error_t err, const char * what)
    The pieces.  */
 
 
+/* Multipliers for moving face y against the generators C->base.F (ng)
+   from a facet or an equality of y's cone (facesys.c) when one puts the
+   generators on its far side: 1 with them, 0 when none serves, -1.  */
+static int
+facet_proof(fmpq ** mult, slong * nmult, _wc_stabcert * C, slong y, slong ng,
+            wc_error_t err)
+{
+    const wc_cone_struct * W = C->S->moving + y;
+    slong ni = fmpz_mat_nrows(W->ineqs), ne = fmpz_mat_nrows(W->eqs), r, k;
+    fmpq h[3];
+    int res = 0;
+
+    for (k = 0; k < 3; k++)
+        fmpq_init(h + k);
+    for (r = 0; r < ni + 2 * ne && res == 0; r++)
+    {
+        const fmpz * row = r < ni ? WC_ROW(W->ineqs, r)
+            : WC_ROW(W->eqs, (r - ni) / 2);
+
+        for (k = 0; k < 3; k++)
+        {
+            fmpq_set_fmpz(h + k, row + k);
+            if (r >= ni && (r - ni) % 2 == 1)
+                fmpq_neg(h + k, h + k);
+        }
+        res = _wc_face_facet_mult(mult, nmult, &C->m, C->S->moving_sign[y],
+                                  C->S->moving_rot[y], h, C->base.F, ng,
+                                  err);
+    }
+    for (k = 0; k < 3; k++)
+        fmpq_clear(h + k);
+    return res;
+}
+
 /* The multipliers of every moving face for the included face f.  */
 static int
 prove_face(_wc_piece_proof * pp, _wc_stabcert * C, slong k, slong f,
@@ -78,10 +112,15 @@ prove_face(_wc_piece_proof * pp, _wc_stabcert * C, slong k, slong f,
     for (j = 0; j < C->nfaces; j++)
     {
         y = C->face[j];
-        r = _wc_face_solve_cone(NULL, NULL, pp->mult[f] + j,
-                                pp->nmult[f] + j, &C->m, S->moving_sign[y],
-                                S->moving_sign[y], S->moving_rot[y], C->base.F,
-                                ng, 0, err);
+        r = facet_proof(pp->mult[f] + j, pp->nmult[f] + j, C, y, ng, err);
+        if (r == 0)
+            r = _wc_face_solve_cone(NULL, NULL, pp->mult[f] + j,
+                                    pp->nmult[f] + j, &C->m,
+                                    S->moving_sign[y], S->moving_sign[y],
+                                    S->moving_rot[y], C->base.F, ng, 0,
+                                    err);
+        else if (r == 1)
+            r = 0;
         if (r != 0)
             return r < 0 ? WC_EINTERNAL : bug(err, "holds wrenches that "
                                               "move");
