@@ -53,10 +53,12 @@ print_to_string(int (*put)(FILE *, const void *), const void * data,
     return s;
 }
 
+/* A certificate to write: of S's strong set, or of R's goal set.  */
 typedef struct
 {
     const wc_problem_struct * P;
     const wc_stability_struct * S;
+    const wc_plan_struct * R;
 }
 job;
 
@@ -68,34 +70,8 @@ put_cert(FILE * f, const void * p)
     int st;
 
     wc_error_init(err);
-    st = wc_stability_certificate_fprint(f, j->P, j->S, err);
-    if (st != WC_OK)
-    {
-        char * m = wc_error_format(err);
-
-        fprintf(stderr, "certificate: %s\n", m != NULL ? m : "?");
-        free(m);
-    }
-    wc_error_clear(err);
-    return st;
-}
-
-typedef struct
-{
-    const wc_problem_struct * P;
-    const wc_plan_struct * R;
-}
-plan_job;
-
-static int
-put_plan_cert(FILE * f, const void * p)
-{
-    const plan_job * j = p;
-    wc_error_t err;
-    int st;
-
-    wc_error_init(err);
-    st = wc_plan_certificate_fprint(f, j->P, j->R, err);
+    st = j->R != NULL ? wc_plan_certificate_fprint(f, j->P, j->R, err)
+        : wc_stability_certificate_fprint(f, j->P, j->S, err);
     if (st != WC_OK)
     {
         char * m = wc_error_format(err);
@@ -180,6 +156,7 @@ check_problem(const wc_problem_t P, const char * what, slong it)
         goto done;              /* the problem is refused: nothing to do */
     j.P = P;
     j.S = S;
+    j.R = NULL;
     cert = print_to_string(put_cert, &j, &clen);
     if (cert == NULL)
         wctest_fail("%s %ld: no certificate", what, (long) it);
@@ -294,7 +271,7 @@ check_plan(const wc_problem_t P, const char * what, slong it)
 {
     wc_plan_t R;
     wc_error_t err;
-    plan_job j;
+    job j;
     char * cert, * goal, * t;
     size_t clen = 0, glen = 0, tlen = 0;
     const char * at;
@@ -305,8 +282,9 @@ check_plan(const wc_problem_t P, const char * what, slong it)
     if (wc_plan(R, P, 0, err) != WC_OK)
         goto done;
     j.P = P;
+    j.S = NULL;
     j.R = R;
-    cert = print_to_string(put_plan_cert, &j, &clen);
+    cert = print_to_string(put_cert, &j, &clen);
     if (cert == NULL)
         wctest_fail("%s %ld: no plan certificate", what, (long) it);
     r = verify(cert, clen);

@@ -8,6 +8,7 @@
 
 #include <flint/fmpz_vec.h>
 
+#include "core/tick.h"
 #include "exact/vec3.h"
 #include "io/printutil.h"
 #include "io/print.h"
@@ -162,4 +163,34 @@ _wc_fprint_cell_proof(FILE * out, const _wc_cell_proof * pf,
         fputc(']', out);
     }
     fputc('}', out);
+}
+
+int
+_wc_fprint_cells(FILE * out, _wc_setcert * C,
+                 int (* prove)(_wc_cell_proof *, void *, slong, wc_error_t),
+                 void * ctx, const char * excluded, wc_error_t err)
+{
+    const wc_cells_struct * A = C->A;
+    _wc_cell_proof pf;
+    slong i;
+    int status = WC_OK;
+
+    fputs(",\n \"cells\": [", out);
+    _wc_cell_proof_init(&pf, C);
+    for (i = 0; i < A->count && status == WC_OK; i++)
+    {
+        _wc_tick("cells of the certificate", i, A->count);
+        status = prove(&pf, ctx, i, err);
+        if (status == WC_OK)
+        {
+            fputs(i > 0 ? ",\n  " : "\n  ", out);
+            _wc_fprint_cell_proof(out, &pf, WC_ROW(A->point, i), excluded);
+        }
+    }
+    _wc_cell_proof_clear(&pf, C);
+    if (status != WC_OK)
+        return status;
+    fputs("]}\n", out);
+    return ferror(out) ? wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                      "write error") : WC_OK;
 }

@@ -36,4 +36,13 @@ void _wc_fprint_planes(FILE * out, const wc_cells_t A);
 void _wc_fprint_cell_proof(FILE * out, const _wc_cell_proof * pf,
                            const fmpz * point, const char * excluded);
 
+/* ",\n "cells": [..]}" and a newline: every cell of C->A proved by
+   prove(pf, ctx, i, err) and written, excluded as above.  Returns WC_OK,
+   prove's failure (nothing more written), or WC_EINTERNAL on a write
+   error.  */
+int _wc_fprint_cells(FILE * out, _wc_setcert * C,
+                     int (* prove)(_wc_cell_proof *, void *, slong,
+                                   wc_error_t),
+                     void * ctx, const char * excluded, wc_error_t err);
+
 #endif

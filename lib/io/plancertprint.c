@@ -10,7 +10,6 @@
 
 #include <config.h>
 
-#include "core/tick.h"
 #include "exact/vec3.h"
 #include "analysis/plancert.h"
 #include "io/printutil.h"
@@ -72,14 +71,18 @@ put_pieces(FILE * out, _wc_plancert * C, wc_error_t err)
     return status;
 }
 
+static int
+prove_cell(_wc_cell_proof * pf, void * ctx, slong i, wc_error_t err)
+{
+    return _wc_plancert_cell(pf, (_wc_plancert *) ctx, i, err);
+}
+
 int
 wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
                            const wc_plan_t R, wc_error_t err)
 {
     const wc_cells_struct * A = R->cells;
     _wc_plancert C;
-    _wc_cell_proof pf;
-    slong i;
     int status;
 
     if ((status = _wc_plancert_init(&C, P, R, err)) != WC_OK)
@@ -96,25 +99,10 @@ wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
     status = put_strings(out, &C, err);
     if (status == WC_OK)
         status = put_pieces(out, &C, err);
-    fputs(",\n \"cells\": [", out);
-    _wc_cell_proof_init(&pf, &C.base);
-    for (i = 0; i < A->count && status == WC_OK; i++)
-    {
-        _wc_tick("cells of the certificate", i, A->count);
-        status = _wc_plancert_cell(&pf, &C, i, err);
-        if (status == WC_OK)
-        {
-            fputs(i > 0 ? ",\n  " : "\n  ", out);
-            _wc_fprint_cell_proof(out, &pf, WC_ROW(A->point, i), "string");
-        }
-    }
-    _wc_cell_proof_clear(&pf, &C.base);
+    if (status == WC_OK)
+        status = _wc_fprint_cells(out, &C.base, prove_cell, &C, "string", err);
     _wc_plancert_clear(&C);
-    if (status != WC_OK)
-        return status;
-    fputs("]}\n", out);
-    return ferror(out) ? wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                                      "write error") : WC_OK;
+    return status;
 }
 
 /* Q := P with mu_s = mu_k = mu at every fixel (the sweep's problem).  */

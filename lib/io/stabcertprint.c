@@ -12,7 +12,6 @@
 
 #include <flint/fmpz_vec.h>
 
-#include "core/tick.h"
 #include "exact/vec3.h"
 #include "analysis/stabcert.h"
 #include "io/printutil.h"
@@ -79,14 +78,18 @@ put_pieces(FILE * out, _wc_stabcert * C, wc_error_t err)
     return status;
 }
 
+static int
+prove_cell(_wc_cell_proof * pf, void * ctx, slong i, wc_error_t err)
+{
+    return _wc_stabcert_cell(pf, (_wc_stabcert *) ctx, i, err);
+}
+
 int
 wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
                                 const wc_stability_t S, wc_error_t err)
 {
     const wc_cells_struct * A = S->cells;
     _wc_stabcert C;
-    _wc_cell_proof pf;
-    slong i;
     int status;
 
     if ((status = _wc_stabcert_init(&C, P, S, err)) != WC_OK)
@@ -103,23 +106,8 @@ wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
     status = put_faces(out, &C, err);
     if (status == WC_OK)
         status = put_pieces(out, &C, err);
-    fputs(",\n \"cells\": [", out);
-    _wc_cell_proof_init(&pf, &C.base);
-    for (i = 0; i < A->count && status == WC_OK; i++)
-    {
-        _wc_tick("cells of the certificate", i, A->count);
-        status = _wc_stabcert_cell(&pf, &C, i, err);
-        if (status == WC_OK)
-        {
-            fputs(i > 0 ? ",\n  " : "\n  ", out);
-            _wc_fprint_cell_proof(out, &pf, WC_ROW(A->point, i), "face");
-        }
-    }
-    _wc_cell_proof_clear(&pf, &C.base);
+    if (status == WC_OK)
+        status = _wc_fprint_cells(out, &C.base, prove_cell, &C, "face", err);
     _wc_stabcert_clear(&C);
-    if (status != WC_OK)
-        return status;
-    fputs("]}\n", out);
-    return ferror(out) ? wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                                      "write error") : WC_OK;
+    return status;
 }
