@@ -116,7 +116,12 @@ for p in "$srcdir"/data/*.wc "$srcdir"/data/corpus/*.wc; do
             j=$((j + 1))
             "$W" classify --certificate="$g-stab$j.json" "$p" $w >/dev/null 2>&1 \
                 && seed verify "$g-stab$j.json"
-        done ;;
+        done
+        # the certificates of sets, where they are small
+        "$W" stability --certificate="$g-set.json" "$p" >/dev/null 2>&1 \
+            && [ "$(wc -c <"$g-set.json")" -le 120000 ] && seed verify "$g-set.json"
+        "$W" plan --certificate="$g-goal.json" "$p" >/dev/null 2>&1 \
+            && [ "$(wc -c <"$g-goal.json")" -le 120000 ] && seed verify "$g-goal.json" ;;
     esac
     case $p in
     */data/corpus/*) awk -v g="$g" 'NR <= 3 { print > (g "-cone" NR ".json") }' \
