@@ -100,6 +100,9 @@ cmd_plan(const cli_command * self, int argc, char ** argv)
     for (k = 0; k < 3; k++)
         fmpq_init(g + k);
     status = cli_load_problem(P, argv[optind], err);
+    if (status == WC_OK && certificate != NULL)
+        status = wc_problem_check_fixels(P, WC_PLAN_CERT_MAX_FIXELS, 0,
+                                         "a plan certificate", err);
     if (status == WC_OK && with_wrench)
         status = cli_parse_numbers(g, argv + optind + 1, 3, "<wrench>", err);
     if (status == WC_OK)

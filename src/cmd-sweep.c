@@ -450,6 +450,9 @@ cmd_sweep(const cli_command * self, int argc, char ** argv)
     wc_error_init(err);
     answer_init(&a);
     status = cli_load_problem(P, argv[optind], err);
+    if (status == WC_OK && o.certificate != NULL)
+        status = wc_problem_check_fixels(P, WC_PLAN_CERT_MAX_FIXELS, 0,
+                                         "a plan certificate", err);
     if (status == WC_OK)
         status = compute(&a, P, &o, err);
     if (status == WC_OK && o.certificate != NULL)

@@ -215,6 +215,12 @@ limit sweep "$tmp/n11.wc:15:1: an insertion plan handles at most 10 fixels (this
 floor 7 near >"$tmp/n7.wc"
 limit complete "$tmp/n7.wc:11:1: the complete plan handles at most 6 fixels (this is fixel 7)" \
     plan --complete "$tmp/n7.wc"
+floor 8 near >"$tmp/n8.wc"
+limit plancert "$tmp/n8.wc:12:1: a plan certificate handles at most 7 fixels (this is fixel 8)" \
+    plan --certificate="$tmp/never.json" "$tmp/n8.wc"
+limit sweepcert "$tmp/n8.wc:12:1: a plan certificate handles at most 7 fixels (this is fixel 8)" \
+    sweep --critical --certificate="$tmp/never.json" "$tmp/n8.wc"
+[ ! -e "$tmp/never.json" ] || fail "a refused certificate left a file"
 # A read that fails (EIO; reading /proc/self/mem from offset 0 gives it
 # on Linux) is an I/O failure, exit 3; a directory is a wrong argument.
 if [ -r /proc/self/mem ]; then

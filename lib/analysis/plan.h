@@ -78,6 +78,11 @@ extern "C" {
 #define WC_PLAN_MAX_FIXELS 10
 #define WC_PLAN_MAX_FIXELS_COMPLETE 6
 
+/* The most fixels a plan's certificate (and a critical bracket's) is
+   written for: its cells grow fast with n (about 20 MB at 7 fixels), and
+   wrenchcone verify reads at most 64 MB.  */
+#define WC_PLAN_CERT_MAX_FIXELS 7
+
 /* Why a wrench is rejected by the complete plan.  */
 typedef enum
 {
@@ -258,7 +263,8 @@ int wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json);
    "plan-goal", wrenchcone-certificate(5)): the goal pieces' faces proved
    to miss every needed string's cone, those cones proved to hold their
    generators, every cell of R's arrangement placed.  R must be wc_plan's
-   result for P.  Returns WC_OK, or WC_EINTERNAL (err set) when a proof
+   result for P.  Returns WC_OK; WC_EINPUT, nothing written, for more than
+   WC_PLAN_CERT_MAX_FIXELS fixels; or WC_EINTERNAL (err set) when a proof
    fails (a bug) or on a write error (plancertprint.c).  */
 int wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
                                const wc_plan_t R, wc_error_t err);

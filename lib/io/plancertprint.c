@@ -85,6 +85,10 @@ wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
     _wc_plancert C;
     int status;
 
+    if ((status = wc_problem_check_fixels(P, WC_PLAN_CERT_MAX_FIXELS, 0,
+                                          "a plan certificate", err))
+        != WC_OK)
+        return status;
     if ((status = _wc_plancert_init(&C, P, R, err)) != WC_OK)
     {
         _wc_plancert_clear(&C);
@@ -177,6 +181,10 @@ wc_critical_certificate_fprint(FILE * out, const wc_problem_t P,
     wc_plan_t R;
     int status;
 
+    if ((status = wc_problem_check_fixels(P, WC_PLAN_CERT_MAX_FIXELS, 0,
+                                          "a plan certificate", err))
+        != WC_OK)
+        return status;
     wc_problem_init(Q);
     wc_plan_init(R);
     fputs("{\"kind\": \"critical-friction\",\n \"problem\": ", out);
