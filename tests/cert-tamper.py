@@ -5,7 +5,7 @@ wrenchcone writes, run by tests/cert-tamper.sh.
 Usage: cert-tamper.py WRENCHCONE DATA_DIR TMP_DIR
 
 For each kind of certificate (mode-feasibility, strong-stability,
-stability-set) the certificates are written by the program for the files
+stability-set, plan-goal, critical-friction) the certificates are written by the program for the files
 of DATA_DIR; then, one at a time, one leaf or one array or one key of one
 certificate is changed, the JSON written again and `wrenchcone verify` run
 on it.  The changes, by what they touch:
@@ -47,11 +47,12 @@ RATIONAL = re.compile(r'^-?[0-9]+(/[0-9]+)?$')
 ENUMS = {
     'state': ['touching', 'near'],
     'relation': ['>', '>=', '='],
-    'kind': ['mode-feasibility', 'strong-stability', 'stability-set'],
+    'kind': ['mode-feasibility', 'strong-stability', 'stability-set',
+             'plan-goal', 'critical-friction'],
 }
 SIGN_KEYS = ('sign', 'mode')
 BUDGET = {'mode-feasibility': 80, 'strong-stability': 80,
-          'stability-set': 140}
+          'stability-set': 110, 'plan-goal': 24, 'critical-friction': 10}
 
 # (class pattern, changes or None for all, how a survivor is judged):
 # 'never' -- it must always be caught; 'claim' -- harmless only when the
@@ -84,6 +85,27 @@ MUST = {
         (r'^moving_faces\[\*\]\.(sign|rotation)$', None, 'never'),
         (r'^cells$', ('drop', 'dup'), 'never'),
         (r'^cells\[\*\]\.in$', None, 'never'),
+    ],
+    'plan-goal': [
+        PROBLEM,
+        (r'^goal(\.empty|\.interior|\.pieces(\[\*\]\.(empty|dim|rays.*'
+         r'|lines.*|faces.*))?)?$', None, 'claim'),
+        (r'^kind$', None, 'never'),
+        (r'^covers', None, 'never'),
+        (r'^planes', None, 'never'),
+        (r'^strings$', ('drop', 'dup'), 'never'),
+        (r'^strings\[\*\]\.string$', None, 'never'),
+        (r'^cells$', ('drop', 'dup'), 'never'),
+        (r'^cells\[\*\]\.in$', None, 'never'),
+    ],
+    'critical-friction': [
+        (r'^kind$', None, 'never'),
+        (r'^(lo|hi|found|empty_at_zero)$', None, 'never'),
+        (r'^lower\.strings$', ('drop', 'dup'), 'never'),
+        (r'^upper\.(kind|covers|planes|goal.*)$', None, 'never'),
+        (r'^upper\.problem\.(mass|inertia|com|fixels\[\*\]\.(point|normal|mu_s|mu_k))', None,
+         'never'),
+        (r'^upper\.cells$', ('drop', 'dup'), 'never'),
     ],
 }
 
@@ -123,7 +145,7 @@ def gen_certs(W, data, tmp, rng):
     """The certificates of each kind: {kind: [(name, text)]}."""
     files = sorted(f for f in os.listdir(data) if f.endswith('.wc'))
     out = {'mode-feasibility': [], 'strong-stability': [],
-           'stability-set': []}
+           'stability-set': [], 'plan-goal': [], 'critical-friction': []}
     probs = [(f[:-3], os.path.join(data, f)) for f in files]
     # Figure 5 with kinetic friction 1/2: weakly but not strongly stable
     # wrenches (wrenchcone-certificate(5)).
@@ -165,6 +187,13 @@ def gen_certs(W, data, tmp, rng):
         for g in wrenches:
             write('strong-stability', '%s %s' % (name, ' '.join(g)),
                   ['classify', '--certificate=' + cert, f, '--'] + list(g))
+    # the sets of a plan, on the two smallest problems
+    for name in ('disk-two-fixels', 'disk-two-fixels-insert'):
+        f = os.path.join(data, name + '.wc')
+        write('plan-goal', name, ['plan', '--certificate=' + cert, f])
+    write('critical-friction', 'disk-two-fixels-insert',
+          ['sweep', '--critical', '--width=1/4', '--certificate=' + cert,
+           os.path.join(data, 'disk-two-fixels-insert.wc')])
     verdicts = set()
     for name, text in out['strong-stability']:
         d = json.loads(text)
@@ -404,12 +433,14 @@ def claim_holds(W, kind, doc, tmp):
                     return 'the program says %s is %s' % (k, json.dumps(d[k]))
             return True
         cert = os.path.join(tmp, 'oracle.json')
-        rc, o, e = run([W, 'stability', '--certificate=' + cert, wc])
+        cmd, key = ('plan', 'goal') if kind == 'plan-goal' \
+            else ('stability', 'strong')
+        rc, o, e = run([W, cmd, '--certificate=' + cert, wc])
         if rc != 0:
-            return 'stability: exit %s: %s' % (rc, e.decode().strip())
-        if canonical_set(json.load(open(cert))['strong']) != \
-                canonical_set(doc['strong']):
-            return 'the program finds another strongly stable set'
+            return '%s: exit %s: %s' % (cmd, rc, e.decode().strip())
+        if canonical_set(json.load(open(cert))[key]) != \
+                canonical_set(doc[key]):
+            return 'the program finds another set'
         return True
     except (KeyError, TypeError, ValueError, IndexError,
             AttributeError) as x:
