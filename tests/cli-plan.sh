@@ -253,4 +253,25 @@ sed 's|"lo": "187/512"|"lo": "3/8"|' "$tmp/c.json" > "$tmp/c2.json"
 "$W" sweep --friction=1/5 --certificate="$tmp/x.json" "$D/disk-two-fixels-insert.wc" > "$tmp/o" 2> "$tmp/e"
 [ $? -eq 2 ] && [ ! -s "$tmp/o" ] || fail "sweep --certificate without --critical: not a usage error"
 
+# Found by review: claims that held with no proof.  An empty goal set at
+# zero without a certificate at hi is malformed; a piece that leaves out
+# the relative interior of its closure does not hold; more planes than
+# verify reads are refused before any work.
+python3 - "$tmp/c.json" "$tmp/g.json" "$tmp" <<'PY' || fail "review mutations"
+import json, sys
+c, g, t = json.load(open(sys.argv[1])), json.load(open(sys.argv[2])), sys.argv[3]
+c.update(found=False, empty_at_zero=True, lo="0", hi=None, lower=None, upper=None)
+json.dump(c, open(t + "/r1.json", "w"))
+assert g["goal"]["pieces"], "three-fixels-insert has a goal set"
+g["goal"]["pieces"][0]["faces"][-1]["included"] = False
+json.dump(g, open(t + "/r2.json", "w"))
+g["planes"] = [[1, 0, k] for k in range(1001)]
+json.dump(g, open(t + "/r3.json", "w"))
+PY
+for r in r1:1 r2:4 r3:1; do
+    "$W" verify "$tmp/${r%%:*}.json" > "$tmp/v" 2>&1
+    st=$?
+    [ $st -eq "${r##*:}" ] || fail "review case ${r%%:*}: exit $st, not ${r##*:}: $(cat "$tmp/v")"
+done
+
 exit $failed

@@ -77,6 +77,9 @@ read_crit(wc_check_reader * c, crit_check * K, const wc_json_node * root)
         != WC_OK)
         return c->status;
     K->at_zero = v->type == WC_JSON_TRUE;
+    if (K->at_zero && !K->found)
+        return _wc_check_bad(c, v, "'empty_at_zero' needs 'found' true: the "
+                             "empty goal set at 0 is proved at hi = 0");
     read_end(c, root, "lo", K->lo, 0);
     if (read_end(c, root, "hi", K->hi, 1) != K->found && c->status == WC_OK)
         return _wc_check_bad(c, root, "'hi' is a number exactly when "

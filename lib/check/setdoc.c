@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "check/checker.h"
+#include "check/verify.h"
 
 void
 _wc_check_set_init(wc_check_set * K)
@@ -57,6 +58,9 @@ read_planes(wc_check_reader * c, wc_check_set * K, const wc_json_node * root)
 
     if (_wc_check_member(c, root, "planes", WC_CHECK_ARRAY, &a) != WC_OK)
         return WC_EINPUT;
+    if (a->len > WC_CERT_MAX_PLANES)
+        return _wc_check_bad(c, a, "a certificate lists at most %d planes",
+                             WC_CERT_MAX_PLANES);
     K->H = _wc_check_zvec_new(_wc_check_times(3, a->len));
     if (K->H == NULL)
         return _wc_check_nomem(c);

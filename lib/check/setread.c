@@ -444,7 +444,7 @@ static int
 piece_spaces(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
              size_t k)
 {
-    size_t f, i, r;
+    size_t f, i, r, top = 0;
     mpq_t * v;
     int rk;
 
@@ -496,6 +496,18 @@ piece_spaces(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
         }
         if ((rk = face_rays(why, X, Q, k, f)) != 1)
             return rk;
+        /* a nonempty convex set holds the relative interior of its
+           closure: the face of all the rays */
+        if (Q->foff[f + 1] - Q->foff[f] == Q->nrays && Q->fdim[f] == Q->dim)
+            top = f + 1;
+    }
+    if (top == 0 || !Q->fincl[top - 1])
+    {
+        piece_says(why, k);
+        _wc_check_put(why, top == 0 ? "lists no face of all its rays"
+                      : "does not include the relative interior of its "
+                      "closure, as a convex set does");
+        return 0;
     }
     return 1;
 }

@@ -15,6 +15,7 @@
 #include "io/printutil.h"
 #include "io/print.h"
 #include "io/certprint.h"
+#include "check/verify.h"
 
 /* Every needed string with its cone and the solutions at its
    generators.  */
@@ -89,6 +90,11 @@ wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
                                           "a plan certificate", err))
         != WC_OK)
         return status;
+    if (A->nplanes > WC_CERT_MAX_PLANES)
+        return wc_error_set(err, WC_EINPUT, NULL, 0, 0, "the certificate "
+                            "would list %ld planes, and verify reads at "
+                            "most %d", (long) A->nplanes,
+                            WC_CERT_MAX_PLANES);
     if ((status = _wc_plancert_init(&C, P, R, err)) != WC_OK)
     {
         _wc_plancert_clear(&C);

@@ -17,6 +17,7 @@
 #include "io/printutil.h"
 #include "io/print.h"
 #include "io/certprint.h"
+#include "check/verify.h"
 
 /* The moving faces, each with its cone and the motions that prove the
    cone moves.  */
@@ -92,6 +93,11 @@ wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
     _wc_stabcert C;
     int status;
 
+    if (A->nplanes > WC_CERT_MAX_PLANES)
+        return wc_error_set(err, WC_EINPUT, NULL, 0, 0, "the certificate "
+                            "would list %ld planes, and verify reads at "
+                            "most %d", (long) A->nplanes,
+                            WC_CERT_MAX_PLANES);
     if ((status = _wc_stabcert_init(&C, P, S, err)) != WC_OK)
     {
         _wc_stabcert_clear(&C);
