@@ -18,7 +18,10 @@
       place, or a cell naming a piece the claim no longer has);
    3. a certificate cut short, or with its first cell dropped, does not
       hold or is malformed, never accepted; one with a static force vector
-      an entry short is malformed.  */
+      an entry short is malformed;
+   4. on the first few random problems of 1 or 2 fixels, the certificate
+      of the critical friction bracket holds, and with lo moved above hi
+      it is not accepted.  */
 
 #include <config.h>
 
@@ -59,6 +62,7 @@ typedef struct
     const wc_problem_struct * P;
     const wc_stability_struct * S;
     const wc_plan_struct * R;
+    const wc_critical_struct * C;
 }
 job;
 
@@ -157,6 +161,7 @@ check_problem(const wc_problem_t P, const char * what, slong it)
     j.P = P;
     j.S = S;
     j.R = NULL;
+    j.C = NULL;
     cert = print_to_string(put_cert, &j, &clen);
     if (cert == NULL)
         wctest_fail("%s %ld: no certificate", what, (long) it);
@@ -284,6 +289,7 @@ check_plan(const wc_problem_t P, const char * what, slong it)
     j.P = P;
     j.S = NULL;
     j.R = R;
+    j.C = NULL;
     cert = print_to_string(put_cert, &j, &clen);
     if (cert == NULL)
         wctest_fail("%s %ld: no plan certificate", what, (long) it);
@@ -310,6 +316,79 @@ check_plan(const wc_problem_t P, const char * what, slong it)
     free(goal);
 done:
     wc_plan_clear(R);
+    wc_error_clear(err);
+}
+
+/* How many critical brackets were certified.  */
+static slong ncritical = 0;
+
+/* The critical bracket of P at width 1/4 (friction at most 4): its
+   certificate holds, and with lo moved above hi it does not.  */
+static int
+put_crit(FILE * f, const void * p)
+{
+    const job * j = p;
+    wc_error_t err;
+    int st;
+
+    wc_error_init(err);
+    st = wc_critical_certificate_fprint(f, j->P, j->C, err);
+    wc_error_clear(err);
+    return st;
+}
+
+static void
+check_critical(const wc_problem_t P, const char * what, slong it)
+{
+    wc_critical_t C;
+    wc_error_t err;
+    fmpq_t width, max;
+    job j;
+    char * cert, * t, * at, * hi;
+    size_t clen = 0, tlen = 0;
+    int r;
+
+    wc_critical_init(C);
+    wc_error_init(err);
+    fmpq_init(width);
+    fmpq_init(max);
+    fmpq_set_si(width, 1, 4);
+    fmpq_set_si(max, 4, 1);
+    if (wc_plan_critical(C, P, width, max, err) != WC_OK)
+        goto done;
+    j.P = P;
+    j.S = NULL;
+    j.R = NULL;
+    j.C = C;
+    cert = print_to_string(put_crit, &j, &clen);
+    if (cert == NULL)
+        wctest_fail("%s %ld: no critical certificate", what, (long) it);
+    if ((r = verify(cert, clen)) != 1)
+        wctest_fail("%s %ld: the critical certificate %s:\n%s", what,
+                    (long) it, r < 0 ? "is malformed" : "does not hold",
+                    cert);
+    at = strstr(cert, "\"lo\": \"");
+    if (C->found && !C->empty_at_zero && at != NULL)
+    {
+        const char * end = strchr(at + 7, '"');
+
+        /* lo := hi + 1, beyond hi: the witness no longer proves it */
+        fmpq_add_si(width, C->hi, 1);
+        hi = fmpq_get_str(NULL, 10, width);
+        t = splice(cert, clen, (size_t) (at + 7 - cert),
+                   (size_t) (end - (at + 7)), hi, &tlen);
+        if (verify(t, tlen) == 1)
+            wctest_fail("%s %ld: a critical certificate with lo above hi "
+                        "holds", what, (long) it);
+        flint_free(hi);
+        free(t);
+    }
+    ncritical++;
+    free(cert);
+done:
+    fmpq_clear(width);
+    fmpq_clear(max);
+    wc_critical_clear(C);
     wc_error_clear(err);
 }
 
@@ -347,6 +426,8 @@ main(void)
         check_problem(P, "random problem", i);
         if (P->n <= 3)
             check_plan(P, "random plan", i);
+        if (P->n <= 2 && ncritical < 4)
+            check_critical(P, "random critical bracket", i);
         wc_problem_clear(P);
     }
     return 0;
