@@ -1,5 +1,8 @@
-/* setcheck.c -- checking a stability-set certificate: the claimed strong
-   stability set is exactly the set of strongly stable wrenches.
+/* setcheck.c -- checking a stability-set certificate (the claimed set is
+   exactly the set of strongly stable wrenches) or a plan-goal one (the
+   claimed set is exactly the plan's goal set: the same argument, with the
+   plan's strings in the place of the moving faces, plansys.c, and no weak
+   part).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -261,8 +264,8 @@ combines(wc_check_scratch * X, wc_check_set * K, const wc_json_node * v,
     return 1;
 }
 
-/* A cell in an included face of a piece (in) or of a moving face's cone
-   (out): it lies in that face.  1, 0 or -1.  */
+/* A cell in an included face of a piece (in) or of the cone of a moving
+   face or plan string (out): it lies in that face.  1, 0 or -1.  */
 static int
 check_located(wc_check_scratch * X, wc_check_set * K, size_t i, size_t nr)
 {
@@ -273,8 +276,9 @@ check_located(wc_check_scratch * X, wc_check_set * K, size_t i, size_t nr)
     int holds;
 
     _wc_check_putf(X->why, "in face %lu of %s %lu: ",
-                   (unsigned long) C->face + 1, C->in ? "piece"
-                   : "the cone of moving face", (unsigned long) C->owner + 1);
+                   (unsigned long) C->face + 1, C->in ? "piece" : K->plan
+                   ? "the cone of string" : "the cone of moving face",
+                   (unsigned long) C->owner + 1);
     if (!Q->fincl[C->face])
     {
         _wc_check_put(X->why, "the cone does not include that face");
