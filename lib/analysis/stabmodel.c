@@ -253,8 +253,7 @@ _wc_stab_weak(fmpq * c, fmpq * sep, const _wc_stab_model * m,
 
     if (t == 0)
     {
-        if (c != NULL)
-            _wc_qvec_zero(c, 2 * m->n);
+        _wc_qvec_zero(c, 2 * m->n);
         _wc_qvec_set(sep, g, 3);
         return _wc_qvec_is_zero(g, 3);
     }
@@ -276,7 +275,7 @@ _wc_stab_weak(fmpq * c, fmpq * sep, const _wc_stab_model * m,
     if (r < 0)
         wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "internal error: "
                      "the static solution fails its check");
-    else if (r == 1 && c != NULL)
+    else if (r == 1)
         static_forces(c, m, z);
     _fmpq_vec_clear(z, ne + 1);
     _fmpq_vec_clear(w, 3 * ne);

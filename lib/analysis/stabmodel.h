@@ -64,8 +64,7 @@ int _wc_stab_all_n(const _wc_stab_model * m, const char * y);
 /* Is g (3) weakly stable?  1 with static forces c (2n: c_1n .. c_nn,
    c_1t .. c_nt) in the mu_s friction cones, g = -J c; 0 with sep (3),
    sep . g > 0 and sep . (J_in +- mu_s J_it) >= 0 at every touching fixel
-   (sep = g when none touches); -1 on failure (err set).  c may be NULL
-   when the forces are not wanted.  */
+   (sep = g when none touches); -1 on failure (err set).  */
 int _wc_stab_weak(fmpq * c, fmpq * sep, const _wc_stab_model * m,
                   const fmpq * g, wc_error_t err);
 
