@@ -22,7 +22,7 @@ C_TESTS = \
 	tests/t-modes \
 	tests/t-verify \
 	tests/t-faces \
-	tests/t-checkcells \
+	tests/t-checkregion \
 	tests/t-setcert \
 	tests/t-random \
 	tests/t-double \

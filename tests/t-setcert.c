@@ -16,7 +16,7 @@
       the strongly stable set is never accepted, whenever the two differ
       (the checker finds a piece face with a motion, or a cell it cannot
       place, or a cell naming a piece the claim no longer has);
-   3. a certificate cut short, or with its first cell dropped, does not
+   3. a certificate cut short, or with its first leaf dropped, does not
       hold or is malformed, never accepted; one with a static force vector
       an entry short is malformed;
    4. on the first few random problems of 1 or 2 fixels, the certificate
@@ -190,20 +190,20 @@ check_problem(const wc_problem_t P, const char * what, slong it)
     /* cut short: malformed */
     if (verify(cert, clen / 2) >= 0)
         wctest_fail("%s %ld: half a certificate is read", what, (long) it);
-    /* the first cell dropped */
-    at = strstr(cert, "\"cells\": [\n  ");
-    if (at != NULL)
+    /* the first node after the basis dropped */
+    at = strstr(cert, "\"tree\": [{\"basis\"");
+    if (at != NULL && (at = strstr(at, ",\n  ")) != NULL)
     {
-        const char * end = strstr(at, "},\n  ");
+        const char * end = strstr(at + 4, ",\n  ");
 
         if (end != NULL)
         {
-            size_t from = (size_t) (at + 13 - cert);
+            size_t from = (size_t) (at - cert);
 
-            t = splice(cert, clen, from, (size_t) (end + 5 - cert) - from,
-                       "", &tlen);
+            t = splice(cert, clen, from, (size_t) (end - cert) - from, "",
+                       &tlen);
             if (verify(t, tlen) == 1)
-                wctest_fail("%s %ld: a certificate without its first cell "
+                wctest_fail("%s %ld: a certificate without its first leaf "
                             "holds", what, (long) it);
             free(t);
         }

@@ -17,6 +17,7 @@
 
 #include <config.h>
 
+#include <flint/fmpz_vec.h>
 #include <flint/fmpq_vec.h>
 
 #include "exact/lp.h"
@@ -39,8 +40,8 @@ _wc_plancert_init(_wc_plancert * C, const wc_problem_t P, const wc_plan_t R,
 {
     const wc_cone_struct ** Q;
     slong i, nq = R->goal->npieces + R->T->nneeded;
-    int status;
 
+    (void) err;
     C->R = R;
     _wc_stab_model_init(&C->m, P);
     C->mu = _fmpq_vec_init(P->n + 1);
@@ -49,9 +50,9 @@ _wc_plancert_init(_wc_plancert * C, const wc_problem_t P, const wc_plan_t R,
     for (i = 0; i < nq; i++)
         Q[i] = i < R->goal->npieces ? R->goal->pieces + i
             : R->cones + (i - R->goal->npieces);
-    status = _wc_setcert_init(&C->base, R->cells, Q, nq, err);
+    _wc_setcert_init(&C->base, Q, nq);
     flint_free(Q);
-    return status;
+    return WC_OK;
 }
 
 void
@@ -226,37 +227,78 @@ _wc_plancert_piece(_wc_piece_proof * pp, _wc_plancert * C, slong k,
     return status;
 }
 
-int
-_wc_plancert_cell(_wc_cell_proof * pf, _wc_plancert * C, slong i,
-                  wc_error_t err)
+/* R in the face of Q that holds s: leaf (kind, owner) or a cut.  */
+static int
+place(const wc_cone_struct * Q, _wc_node_kind kind, slong owner,
+      const fmpq * s, const _wc_region3 * R, _wc_tree_node * leaf,
+      fmpz * plane)
 {
-    const wc_plan_struct * R = C->R;
-    slong k, j;
-    fmpq sum[3];
-    int status;
+    leaf->kind = kind;
+    leaf->a = owner;
+    leaf->b = wc_cone_locate(Q, s);
+    return _wc_setcert_in_face(plane, Q, leaf->b, R);
+}
 
+int
+_wc_plancert_classify(void * ctx, const _wc_region3 * R, const fmpz * sum,
+                      _wc_tree_node * leaf, fmpz * sep, fmpz * plane,
+                      wc_error_t err)
+{
+    _wc_plancert * C = ctx;
+    const wc_plan_struct * P = C->R;
+    slong k, j = 0;
+    fmpq s[3];
+    int r;
+
+    (void) sep;
     for (k = 0; k < 3; k++)
-        fmpq_init(sum + k);
-    pf->nrays = _wc_setcert_rays(&C->base, i, sum);
-    for (k = 0; k < R->goal->npieces; k++)
-        if (wc_cone_contains(R->goal->pieces + k, sum))
-            break;
-    if (k < R->goal->npieces)
     {
-        pf->reason = WC_CELL_IN;
-        status = _wc_setcert_locate(pf, &C->base, R->goal->pieces + k, k,
-                                    sum, err);
+        fmpq_init(s + k);
+        fmpq_set_fmpz(s + k, sum + k);
     }
+    for (k = 0; k < P->goal->npieces; k++)
+        if (wc_cone_contains(P->goal->pieces + k, s))
+            break;
+    for (j = 0; k == P->goal->npieces && j < P->T->nneeded; j++)
+        if (wc_cone_contains(P->cones + j, s))
+            break;
+    if (k < P->goal->npieces)
+        r = place(P->goal->pieces + k, WC_NODE_IN, k, s, R, leaf, plane);
+    else if (j < P->T->nneeded)
+        r = place(P->cones + j, WC_NODE_EXCLUDED, j, s, R, leaf, plane);
     else
     {
-        pf->reason = WC_CELL_EXCLUDED;
-        for (j = 0; j < R->T->nneeded; j++)
-            if (wc_cone_contains(R->cones + j, sum))
-                break;
-        status = j == R->T->nneeded ? bug(err, "leaves out a cell")
-            : _wc_setcert_locate(pf, &C->base, R->cones + j, j, sum, err);
+        bug(err, "leaves out a region");
+        r = -1;
     }
     for (k = 0; k < 3; k++)
-        fmpq_clear(sum + k);
-    return status;
+        fmpq_clear(s + k);
+    return r;
+}
+
+void
+_wc_plancert_prefer(fmpz ** h, slong * n, const _wc_plancert * C)
+{
+    const wc_plan_struct * P = C->R;
+    slong k, i, m = 0, nq = P->goal->npieces + P->T->nneeded;
+
+    for (k = 0; k < nq; k++)
+    {
+        const wc_cone_struct * Q = k < P->goal->npieces ? P->goal->pieces + k
+            : P->cones + (k - P->goal->npieces);
+
+        m += fmpz_mat_nrows(Q->ineqs) + fmpz_mat_nrows(Q->eqs);
+    }
+    *h = _fmpz_vec_init(3 * m + 3);
+    *n = 0;
+    for (k = 0; k < nq; k++)
+    {
+        const wc_cone_struct * Q = k < P->goal->npieces ? P->goal->pieces + k
+            : P->cones + (k - P->goal->npieces);
+
+        for (i = 0; i < fmpz_mat_nrows(Q->ineqs); i++)
+            _fmpz_vec_set(*h + 3 * (*n)++, WC_ROW(Q->ineqs, i), 3);
+        for (i = 0; i < fmpz_mat_nrows(Q->eqs); i++)
+            _fmpz_vec_set(*h + 3 * (*n)++, WC_ROW(Q->eqs, i), 3);
+    }
 }

@@ -11,7 +11,7 @@
    included face F of a goal piece is proved to miss every W(x): Motzkin
    multipliers showing that no sum alpha_i G_i, every alpha_i > 0, lies in
    W(x).  Each W(x) is proved to hold its generators: a solution of the
-   string's system at each.  Each cell is placed in a face of a goal piece
+   string's system at each.  Each region of the tree is placed in a face of a goal piece
    or of a W(x) (setcert.h).  */
 
 #ifndef WC_PLANCERT_H
@@ -61,8 +61,14 @@ int _wc_plancert_cone(_wc_cone_proof * cp, _wc_plancert * C, slong j,
 int _wc_plancert_piece(_wc_piece_proof * pp, _wc_plancert * C, slong k,
                        wc_error_t err);
 
-/* pf := the place of cell i.  */
-int _wc_plancert_cell(_wc_cell_proof * pf, _wc_plancert * C, slong i,
-                      wc_error_t err);
+/* The tree's classifier (setcert.h) for the goal set: a region in a
+   goal piece or in a string's cone.  ctx is C.  */
+int _wc_plancert_classify(void * ctx, const _wc_region3 * R,
+                          const fmpz * sum, _wc_tree_node * leaf,
+                          fmpz * sep, fmpz * plane, wc_error_t err);
+
+/* *h := the planes the tree's basis is best taken from (*n of them; free
+   with _fmpz_vec_clear(*h, 3 *n + 3)).  */
+void _wc_plancert_prefer(fmpz ** h, slong * n, const _wc_plancert * C);
 
 #endif

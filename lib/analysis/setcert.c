@@ -1,15 +1,20 @@
-/* setcert.c -- what the certificates of sets share: the cells with their
-   rays, and a cell's place in a face of a cone.
+/* setcert.c -- what the certificates of sets share: room for generators,
+   the proofs' storage, and the tree of cuts with its regions' places.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   See setcert.h.  The combinations come from a 3-D simplex
-   (_wc_lp_cone3), which checks its answer exactly.  */
+   See setcert.h.  The tree is grown from the basis: a region that the
+   classifier cannot place is cut by the plane it names, which has part
+   of the region on each side, so no plane cuts a region twice on one path
+   and the tree is finite.  */
 
 #include <config.h>
 
+#include <stdlib.h>
+
+#include <flint/fmpz_vec.h>
 #include <flint/fmpq_vec.h>
 
 #include "exact/lp.h"
@@ -24,24 +29,11 @@ _wc_setcert_bug(wc_error_t err, const char * set, const char * what)
                         "the %s %s", set, what);
 }
 
-int
-_wc_setcert_init(_wc_setcert * C, const wc_cells_t A,
-                 const wc_cone_struct * const * Q, slong nq, wc_error_t err)
+void
+_wc_setcert_init(_wc_setcert * C, const wc_cone_struct * const * Q, slong nq)
 {
-    slong i, most = 0;
+    slong i, most = 1;
 
-    C->A = A;
-    C->off = C->ray = NULL;
-    C->G = C->F = NULL;
-    C->gcap = C->fcap = 0;
-    if (wc_cells_rays(&C->off, &C->ray, A, err) != WC_OK)
-        return WC_EINTERNAL;
-    for (i = 0; i < A->count; i++)
-        if (C->off[i + 1] - C->off[i] > most)
-            most = C->off[i + 1] - C->off[i];
-    C->gcap = most + 1;
-    C->G = _fmpq_vec_init(3 * C->gcap);
-    most = 1;
     for (i = 0; i < nq; i++)
     {
         slong g = fmpz_mat_nrows(Q[i]->rays) + 2 * fmpz_mat_nrows(Q[i]->lines);
@@ -50,16 +42,11 @@ _wc_setcert_init(_wc_setcert * C, const wc_cells_t A,
     }
     C->fcap = most;
     C->F = _fmpq_vec_init(3 * C->fcap);
-    return WC_OK;
 }
 
 void
 _wc_setcert_clear(_wc_setcert * C)
 {
-    flint_free(C->off);
-    flint_free(C->ray);
-    if (C->G != NULL)
-        _fmpq_vec_clear(C->G, 3 * C->gcap);
     if (C->F != NULL)
         _fmpq_vec_clear(C->F, 3 * C->fcap);
 }
@@ -80,23 +67,6 @@ _wc_setcert_generators(_wc_setcert * C, const wc_cone_struct * Q, slong f)
             fmpq_neg(C->F + 3 * (g + 1) + j, C->F + 3 * g + j);
     }
     return g;
-}
-
-slong
-_wc_setcert_rays(_wc_setcert * C, slong i, fmpq * sum)
-{
-    slong k, j, nr = C->off[i + 1] - C->off[i];
-
-    for (j = 0; j < 3; j++)
-        fmpq_zero(sum + j);
-    for (k = 0; k < nr; k++)
-    {
-        _fmpq_vec_set_fmpz_vec(C->G + 3 * k,
-                               WC_ROW(C->A->point, C->ray[C->off[i] + k]), 3);
-        for (j = 0; j < 3; j++)
-            fmpq_add(sum + j, sum + j, C->G + 3 * k + j);
-    }
-    return nr;
 }
 
 void
@@ -132,108 +102,285 @@ _wc_cone_proof_clear(_wc_cone_proof * cp, slong n)
     flint_free(cp->included);
 }
 
-void
-_wc_cell_proof_init(_wc_cell_proof * pf, const _wc_setcert * C)
-{
-    slong k;
 
-    pf->reason = WC_CELL_IN;
-    for (k = 0; k < 3; k++)
-        fmpq_init(pf->sep + k);
-    pf->owner = pf->face = -1;
-    pf->nrays = 0;
-    pf->ngen = 0;
-    pf->alpha = _fmpq_vec_init(C->fcap);
-    pf->beta = _fmpq_vec_init(C->gcap * C->fcap);
+/* ---------------------------------------------------------------------
+   The tree.  */
+
+void
+_wc_settree_init(_wc_settree * T)
+{
+    T->n = T->cap = 0;
+    T->node = NULL;
+    T->nplanes = T->pcap = 0;
+    T->planes = NULL;
+    T->nsep = T->scap = 0;
+    T->sep = NULL;
+    T->basis[0] = T->basis[1] = T->basis[2] = -1;
 }
 
 void
-_wc_cell_proof_clear(_wc_cell_proof * pf, const _wc_setcert * C)
+_wc_settree_clear(_wc_settree * T)
 {
-    slong k;
-
-    for (k = 0; k < 3; k++)
-        fmpq_clear(pf->sep + k);
-    _fmpq_vec_clear(pf->alpha, C->fcap);
-    _fmpq_vec_clear(pf->beta, C->gcap * C->fcap);
+    flint_free(T->node);
+    if (T->planes != NULL)
+        _fmpz_vec_clear(T->planes, 3 * T->pcap);
+    if (T->sep != NULL)
+        _fmpz_vec_clear(T->sep, 3 * T->scap);
+    _wc_settree_init(T);
 }
 
-/* alpha (ng) with every entry > 0 and sum alpha_i F_i = x, x known to lie
-   in relint pos(F): x - t s is in pos(F) for s = sum F_i and some t > 0,
-   found by halving t from 1 (a 3-D simplex each, exact/lp.h), and then
-   alpha = (its coefficients) + t.  1, or -1 on failure.  */
+static void
+push_node(_wc_settree * T, _wc_node_kind kind, slong a, slong b)
+{
+    if (T->n == T->cap)
+    {
+        T->cap = T->cap < 64 ? 64 : 2 * T->cap;
+        T->node = flint_realloc(T->node, sizeof(_wc_tree_node) * T->cap);
+    }
+    T->node[T->n].kind = kind;
+    T->node[T->n].a = a;
+    T->node[T->n++].b = b;
+}
+
+/* Append the vector v to the list *list (*n of them, room for *cap).  */
+static slong
+push_vec(fmpz ** list, slong * n, slong * cap, const fmpz * v)
+{
+    if (*n == *cap)
+    {
+        slong cap2 = *cap < 16 ? 16 : 2 * *cap, i;
+        fmpz * l = _fmpz_vec_init(3 * cap2);
+
+        for (i = 0; i < 3 * *n; i++)
+            fmpz_swap(l + i, *list + i);
+        if (*list != NULL)
+            _fmpz_vec_clear(*list, 3 * *cap);
+        *list = l;
+        *cap = cap2;
+    }
+    _fmpz_vec_set(*list + 3 * *n, v, 3);
+    return (*n)++;
+}
+
+/* The index of the plane h (made canonical) in T's list, added if new.  */
+static slong
+plane_index(_wc_settree * T, fmpz * h)
+{
+    slong i;
+
+    _wc_region3_canonical(h);
+    for (i = 0; i < T->nplanes; i++)
+        if (_fmpz_vec_equal(T->planes + 3 * i, h, 3))
+            return i;
+    return push_vec(&T->planes, &T->nplanes, &T->pcap, h);
+}
+
+typedef struct
+{
+    _wc_settree_classify classify;
+    void * ctx;
+    fmpz * sum, * sep, * plane;         /* 3 each */
+}
+grower;
+
 static int
-strictly_inside(fmpq * alpha, const fmpq * F, slong ng, const fmpq * x,
-                wc_error_t err)
+grow(_wc_settree * T, grower * G, const _wc_region3 * R, slong depth,
+     wc_error_t err)
 {
-    fmpq y[3], s[3], sep[3];
-    fmpq_t t;
-    slong i, k, tries;
-    int r = 0;
+    _wc_tree_node leaf;
+    _wc_region3 part[3];
+    slong p, k, parts = 0;
+    int r, status = WC_OK;
 
-    fmpq_init(t);
-    for (k = 0; k < 3; k++)
+    if (R->dim < 0)
     {
-        fmpq_init(y + k);
-        fmpq_init(s + k);
-        fmpq_init(sep + k);
-        for (i = 0; i < ng; i++)
-            fmpq_add(s + k, s + k, F + 3 * i + k);
+        push_node(T, WC_NODE_EMPTY, 0, 0);
+        return WC_OK;
     }
-    fmpq_one(t);
-    for (tries = 0; tries < 200 && r == 0; tries++)
+    _wc_region3_sum(G->sum, R);
+    r = G->classify(G->ctx, R, G->sum, &leaf, G->sep, G->plane, err);
+    if (r < 0)
+        return WC_EINTERNAL;
+    if (r == 1)
     {
-        for (k = 0; k < 3; k++)
+        if (leaf.kind == WC_NODE_NOT_WEAK)
+            leaf.a = push_vec(&T->sep, &T->nsep, &T->scap, G->sep);
+        push_node(T, leaf.kind, leaf.a, leaf.b);
+        return WC_OK;
+    }
+    p = plane_index(T, G->plane);
+    push_node(T, WC_NODE_SPLIT, p, 0);
+    for (k = 0; k < 3; k++)
+        _wc_region3_init(part + k);
+    _wc_region3_split(part, R, T->planes + 3 * p);
+    for (k = 0; k < 3; k++)
+        parts += part[k].dim >= 0;
+    if (parts < 2 || depth > 3 * T->nplanes + 3)
+        status = _wc_setcert_bug(err, "certificate", "cuts a region by a "
+                                 "plane that misses it");
+    for (k = 0; k < 3 && status == WC_OK; k++)
+        status = grow(T, G, part + k, depth + 1, err);
+    for (k = 0; k < 3; k++)
+        _wc_region3_clear(part + k);
+    return status;
+}
+
+/* T->basis := the first three independent planes of prefer (np), then
+   of the coordinate planes.  */
+static void
+choose_basis(_wc_settree * T, const fmpz * prefer, slong np)
+{
+    fmpz h[9], w[3];
+    fmpz_t d;
+    slong i, k = 0, j;
+
+    fmpz_init(d);
+    for (j = 0; j < 9; j++)
+        fmpz_init(h + j);
+    for (j = 0; j < 3; j++)
+        fmpz_init(w + j);
+    for (i = 0; i < np + 3 && k < 3; i++)
+    {
+        if (i < np)
+            _fmpz_vec_set(h + 3 * k, prefer + 3 * i, 3);
+        else
         {
-            fmpq_mul(y + k, t, s + k);
-            fmpq_sub(y + k, x + k, y + k);
+            _fmpz_vec_zero(h + 3 * k, 3);
+            fmpz_one(h + 3 * k + (i - np));
         }
-        r = _wc_lp_cone3(alpha, sep, F, ng, y, err);
-        if (r == 0)
-            fmpq_div_2exp(t, t, 1);
+        if (k == 0)
+            k += !_fmpz_vec_is_zero(h, 3);
+        else if (k == 1)
+        {
+            _wc_zvec3_cross(w, h, h + 3);
+            k += !_fmpz_vec_is_zero(w, 3);
+        }
+        else
+        {
+            _wc_zvec3_cross(w, h, h + 3);
+            _fmpz_vec_dot(d, w, h + 6, 3);
+            k += !fmpz_is_zero(d);
+        }
     }
-    for (i = 0; r == 1 && i < ng; i++)
-        fmpq_add(alpha + i, alpha + i, t);
-    if (r == 0)
-    {
-        wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "internal error: a "
-                     "cell's point is not inside its face");
-        r = -1;
-    }
-    fmpq_clear(t);
     for (k = 0; k < 3; k++)
+        T->basis[k] = plane_index(T, h + 3 * k);
+    for (j = 0; j < 9; j++)
+        fmpz_clear(h + j);
+    for (j = 0; j < 3; j++)
+        fmpz_clear(w + j);
+    fmpz_clear(d);
+}
+
+typedef struct
+{
+    const fmpz * h;
+    slong i;
+}
+listed_plane;
+
+static int
+plane_cmp(const void * x, const void * y)
+{
+    const fmpz * a = ((const listed_plane *) x)->h;
+    const fmpz * b = ((const listed_plane *) y)->h;
+    slong j;
+    int c;
+
+    for (j = 0; j < 3; j++)
+        if ((c = fmpz_cmp(a + j, b + j)) != 0)
+            return c;
+    return 0;
+}
+
+/* Sort T's planes and renumber the nodes.  */
+static void
+sort_tree(_wc_settree * T)
+{
+    listed_plane * by = flint_malloc(sizeof(listed_plane) * (T->nplanes + 1));
+    slong * at = flint_malloc(sizeof(slong) * (T->nplanes + 1)), i;
+    fmpz * sorted = _fmpz_vec_init(3 * T->pcap);
+
+    for (i = 0; i < T->nplanes; i++)
     {
-        fmpq_clear(y + k);
-        fmpq_clear(s + k);
-        fmpq_clear(sep + k);
+        by[i].h = T->planes + 3 * i;
+        by[i].i = i;
     }
-    return r;
+    qsort(by, T->nplanes, sizeof(listed_plane), plane_cmp);
+    for (i = 0; i < T->nplanes; i++)
+    {
+        at[by[i].i] = i;
+        _fmpz_vec_set(sorted + 3 * i, by[i].h, 3);
+    }
+    for (i = 0; i < T->n; i++)
+        if (T->node[i].kind == WC_NODE_SPLIT)
+            T->node[i].a = at[T->node[i].a];
+    for (i = 0; i < 3; i++)
+        T->basis[i] = at[T->basis[i]];
+    _fmpz_vec_clear(T->planes, 3 * T->pcap);
+    T->planes = sorted;
+    flint_free(by);
+    flint_free(at);
 }
 
 int
-_wc_setcert_locate(_wc_cell_proof * pf, _wc_setcert * C,
-                   const wc_cone_struct * Q, slong owner, const fmpq * sum,
-                   wc_error_t err)
+_wc_settree_build(_wc_settree * T, const fmpz * prefer, slong np,
+                  _wc_settree_classify classify, void * ctx, wc_error_t err)
 {
-    fmpq sep[3];
-    slong f = wc_cone_locate(Q, sum), j;
-    int r;
+    _wc_region3 R[27];
+    grower G;
+    slong k;
+    int status = WC_OK;
 
-    if (f < 0 || !Q->faces[f].included)
-        return _wc_setcert_bug(err, "set", "misses a cell");
-    pf->owner = owner;
-    pf->face = f;
-    pf->ngen = _wc_setcert_generators(C, Q, f);
-    r = strictly_inside(pf->alpha, C->F, pf->ngen, sum, err);
-    for (j = 0; j < 3; j++)
-        fmpq_init(sep + j);
-    for (j = 0; r == 1 && j < pf->nrays; j++)
-        r = _wc_lp_cone3(pf->beta + j * pf->ngen, sep, C->F, pf->ngen,
-                         C->G + 3 * j, err);
-    for (j = 0; j < 3; j++)
-        fmpq_clear(sep + j);
-    if (r != 1)
-        return r < 0 ? WC_EINTERNAL : _wc_setcert_bug(err, "set", "has a "
-                                                      "cell across a face");
-    return WC_OK;
+    G.classify = classify;
+    G.ctx = ctx;
+    G.sum = _fmpz_vec_init(9);
+    G.sep = G.sum + 3;
+    G.plane = G.sum + 6;
+    choose_basis(T, prefer, np);
+    for (k = 0; k < 27; k++)
+        _wc_region3_init(R + k);
+    for (k = 0; k < 9; k++)
+        fmpz_set(G.sum + k, T->planes + 3 * T->basis[k / 3] + k % 3);
+    _wc_region3_basis(R, G.sum);
+    for (k = 0; k < 27 && status == WC_OK; k++)
+        status = grow(T, &G, R + k, 0, err);
+    for (k = 0; k < 27; k++)
+        _wc_region3_clear(R + k);
+    _fmpz_vec_clear(G.sum, 9);
+    if (status == WC_OK)
+        sort_tree(T);
+    return status;
+}
+
+int
+_wc_setcert_in_face(fmpz * plane, const wc_cone_struct * Q, slong f,
+                    const _wc_region3 * R)
+{
+    const wc_face_struct * F = Q->faces + f;
+    slong m = fmpz_mat_nrows(Q->ineqs), a, i, j;
+    fmpz_t d;
+    int tight, out = 0;
+
+    fmpz_init(d);
+    for (a = 0; a < m + fmpz_mat_nrows(Q->eqs) && !out; a++)
+    {
+        const fmpz * h = a < m ? WC_ROW(Q->ineqs, a)
+            : WC_ROW(Q->eqs, a - m);
+
+        tight = 1;
+        for (j = 0; a < m && j < F->nrays && tight; j++)
+        {
+            _fmpz_vec_dot(d, h, WC_ROW(Q->rays, F->rays[j]), 3);
+            tight = fmpz_is_zero(d);
+        }
+        for (i = 0; i < R->n && !out; i++)
+        {
+            _fmpz_vec_dot(d, h, R->r + 3 * i, 3);
+            out = tight ? !fmpz_is_zero(d) : fmpz_sgn(d) > 0;
+        }
+        if (out)
+            _fmpz_vec_set(plane, h, 3);
+    }
+    fmpz_clear(d);
+    return !out;
 }

@@ -1,5 +1,6 @@
 /* stabcert.c -- the proof that a strong stability set is exact: its
-   pieces' included faces one by one, and every cell of its arrangement.
+   pieces' included faces one by one, and a place for every region of
+   the tree.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -7,13 +8,14 @@
 
    See stabcert.h.  Every proof comes from an exact LP (facesys.c,
    exact/lp.c) and is checked there against its rows; an LP that contradicts
-   the set (a motion in an included face, none for a cell outside the set)
+   the set (a motion in an included face, none for a region outside it)
    means a wrong set, reported as an internal error rather than written.  */
 
 #include <config.h>
 
 #include <stdlib.h>
 
+#include <flint/fmpz_vec.h>
 #include <flint/fmpq_vec.h>
 
 #include "model/model.h"
@@ -28,8 +30,8 @@ _wc_stabcert_init(_wc_stabcert * C, const wc_problem_t P,
 {
     const wc_cone_struct ** Q;
     slong i, nq = S->strong->npieces + S->nmoving;
-    int status;
 
+    (void) err;
     C->S = S;
     _wc_stab_model_init(&C->m, P);
     C->face = flint_malloc(sizeof(slong) * (S->nmoving + 1));
@@ -41,9 +43,9 @@ _wc_stabcert_init(_wc_stabcert * C, const wc_problem_t P,
     for (i = 0; i < nq; i++)
         Q[i] = i < S->strong->npieces ? S->strong->pieces + i
             : S->moving + (i - S->strong->npieces);
-    status = _wc_setcert_init(&C->base, S->cells, Q, nq, err);
+    _wc_setcert_init(&C->base, Q, nq);
     flint_free(Q);
-    return status;
+    return WC_OK;
 }
 
 void
@@ -221,129 +223,131 @@ _wc_stabcert_cone(_wc_cone_proof * cp, _wc_stabcert * C, slong j,
 }
 
 /* ---------------------------------------------------------------------
-   The cells.  */
+   The regions.  */
 
-/* A cell outside the weak cone W lies on the open outer side of one of
-   W's facets (the arrangement has W's planes), or off one of its
-   equalities: that normal y is a separator (y . x <= 0 on W, so y . w >= 0
-   on every edge w, whose negatives generate W).  pf->sep := it, checked
-   against the cell's rays; 0 when none serves (then an LP finds one).  */
+/* R (its rays summing to s) is outside the closed weak cone W: one of
+   W's facets or equalities has s on its open outer side.  Its normal y
+   (y . x <= 0 on W, so y . w >= 0 on every friction edge w, whose
+   negatives generate W) is a separator when every ray is on that side
+   too; else R is cut by the first such plane.  */
 static int
-facet_separates(_wc_cell_proof * pf, _wc_stabcert * C, const fmpq * sum)
+not_weak(_wc_stabcert * C, const _wc_region3 * R, const fmpq * s,
+         _wc_tree_node * leaf, fmpz * sep, fmpz * plane, wc_error_t err)
 {
     const wc_cone_struct * W = C->S->weak;
-    slong r, j, k, m = fmpz_mat_nrows(W->ineqs);
+    slong r, j, m = fmpz_mat_nrows(W->ineqs), cut = -1;
     fmpq_t d;
-    int ok = 0, side;
+    fmpz_t e;
+    int ok = 0, side = 1;
 
     fmpq_init(d);
+    fmpz_init(e);
     for (r = 0; r < m + 2 * fmpz_mat_nrows(W->eqs) && !ok; r++)
     {
         const fmpz * h = r < m ? WC_ROW(W->ineqs, r)
             : WC_ROW(W->eqs, (r - m) / 2);
 
         side = r < m || (r - m) % 2 == 0 ? 1 : -1;
-        _wc_zqvec3_dot(d, h, sum);
+        _wc_zqvec3_dot(d, h, s);
         if (fmpq_sgn(d) * side <= 0)
             continue;
+        cut = cut < 0 ? r : cut;
         ok = 1;
-        for (j = 0; j < pf->nrays && ok; j++)
+        for (j = 0; j < R->n && ok; j++)
         {
-            _wc_zqvec3_dot(d, h, C->base.G + 3 * j);
-            ok = fmpq_sgn(d) * side >= 0;
+            _fmpz_vec_dot(e, h, R->r + 3 * j, 3);
+            ok = fmpz_sgn(e) * side >= 0;
         }
-        for (k = 0; ok && k < 3; k++)
+        if (ok)
         {
-            fmpq_set_fmpz(pf->sep + k, h + k);
-            if (side < 0)
-                fmpq_neg(pf->sep + k, pf->sep + k);
+            _fmpz_vec_scalar_mul_si(sep, h, 3, side);
+            leaf->kind = WC_NODE_NOT_WEAK;
         }
     }
+    if (!ok && cut >= 0)
+        _fmpz_vec_set(plane, cut < m ? WC_ROW(W->ineqs, cut)
+                      : WC_ROW(W->eqs, (cut - m) / 2), 3);
     fmpq_clear(d);
-    return ok;
+    fmpz_clear(e);
+    if (!ok && cut < 0)
+        bug(err, "has a region off the weak cone but on no side of it");
+    return ok ? 1 : cut >= 0 ? 0 : -1;
 }
 
-/* A cell that is not weakly stable: pf->sep := y with y . w >= 0 on every
-   mu_s edge w of a touching fixel, y . r >= 0 on every ray and y . sum > 0
-   (the separator of the sum alone may miss a ray).  */
+/* R in the face of Q that holds s: leaf (kind, owner) or a cut.  */
 static int
-prove_not_weak(_wc_cell_proof * pf, _wc_stabcert * C, const fmpq * sum,
-               wc_error_t err)
+place(const wc_cone_struct * Q, _wc_node_kind kind, slong owner,
+      const fmpq * s, const _wc_region3 * R, _wc_tree_node * leaf,
+      fmpz * plane)
 {
-    const _wc_stab_model * m = &C->m;
-    slong rows = 2 * m->t + pf->nrays + 1, i, k, r = 0;
-    fmpq_mat_t A;
-    wc_relation * rel = flint_malloc(sizeof(wc_relation) * rows);
-    fmpq ed[4];
-    int ok;
+    slong f = wc_cone_locate(Q, s);
 
-    fmpq_mat_init(A, rows, 3);
-    for (k = 0; k < 4; k++)
-        fmpq_init(ed + k);
-    for (i = 0; i < m->t; i++)
-    {
-        wc_friction_edges(ed, m->P->fixels + m->tidx[i], 'n');
-        _wc_stab_edge_wrench(A->rows[r], m, m->tidx[i], ed);
-        rel[r++] = WC_REL_GE;
-        _wc_stab_edge_wrench(A->rows[r], m, m->tidx[i], ed + 2);
-        rel[r++] = WC_REL_GE;
-    }
-    for (i = 0; i < pf->nrays; i++)
-    {
-        _wc_qvec_set(A->rows[r], C->base.G + 3 * i, 3);
-        rel[r++] = WC_REL_GE;
-    }
-    _wc_qvec_set(A->rows[r], sum, 3);
-    rel[r++] = WC_REL_GT;
-    ok = _wc_lp_motzkin(pf->sep, NULL, A, rel, err);
-    fmpq_mat_clear(A);
-    flint_free(rel);
-    for (k = 0; k < 4; k++)
-        fmpq_clear(ed + k);
-    if (ok != 1)
-        return ok < 0 ? WC_EINTERNAL : bug(err, "has a cell partly weakly "
-                                           "stable");
-    return WC_OK;
+    leaf->kind = kind;
+    leaf->a = owner;
+    leaf->b = f;
+    return _wc_setcert_in_face(plane, Q, f, R);
 }
 
 int
-_wc_stabcert_cell(_wc_cell_proof * pf, _wc_stabcert * C, slong i,
-                  wc_error_t err)
+_wc_stabcert_classify(void * ctx, const _wc_region3 * R, const fmpz * sum,
+                      _wc_tree_node * leaf, fmpz * sep, fmpz * plane,
+                      wc_error_t err)
 {
+    _wc_stabcert * C = ctx;
     const wc_stability_struct * S = C->S;
     slong k, j;
-    fmpq sum[3];
-    int status = WC_OK;
+    fmpq s[3];
+    int r;
 
     for (k = 0; k < 3; k++)
-        fmpq_init(sum + k);
-    pf->nrays = _wc_setcert_rays(&C->base, i, sum);
-    pf->owner = pf->face = -1;
-    for (k = 0; k < S->strong->npieces; k++)
-        if (wc_cone_contains(S->strong->pieces + k, sum))
-            break;
-    pf->reason = WC_CELL_IN;
-    if (k < S->strong->npieces)
-        status = _wc_setcert_locate(pf, &C->base, S->strong->pieces + k, k,
-                                    sum, err);
-    else if (!wc_cone_contains(S->weak, sum))
     {
-        pf->reason = WC_CELL_NOT_WEAK;
-        if (!facet_separates(pf, C, sum))
-            status = prove_not_weak(pf, C, sum, err);
+        fmpq_init(s + k);
+        fmpq_set_fmpz(s + k, sum + k);
     }
+    for (k = 0; k < S->strong->npieces; k++)
+        if (wc_cone_contains(S->strong->pieces + k, s))
+            break;
+    for (j = 0; k == S->strong->npieces && j < C->nfaces; j++)
+        if (wc_cone_contains(S->moving + C->face[j], s))
+            break;
+    if (k < S->strong->npieces)
+        r = place(S->strong->pieces + k, WC_NODE_IN, k, s, R, leaf, plane);
+    else if (!wc_cone_contains(S->weak, s))
+        r = not_weak(C, R, s, leaf, sep, plane, err);
+    else if (j < C->nfaces)
+        r = place(S->moving + C->face[j], WC_NODE_EXCLUDED, j, s, R, leaf,
+                  plane);
     else
     {
-        pf->reason = WC_CELL_EXCLUDED;
-        for (j = 0; j < C->nfaces; j++)
-            if (wc_cone_contains(S->moving + C->face[j], sum))
-                break;
-        status = j == C->nfaces ? bug(err, "leaves out a strongly stable "
-                                      "cell")
-            : _wc_setcert_locate(pf, &C->base, S->moving + C->face[j], j,
-                                 sum, err);
+        bug(err, "leaves out a strongly stable region");
+        r = -1;
     }
     for (k = 0; k < 3; k++)
-        fmpq_clear(sum + k);
-    return status;
+        fmpq_clear(s + k);
+    return r;
+}
+
+void
+_wc_stabcert_prefer(fmpz ** h, slong * n, const _wc_stabcert * C)
+{
+    const wc_stability_struct * S = C->S;
+    slong k, i, m = 0;
+
+    for (k = -1; k < S->strong->npieces; k++)
+    {
+        const wc_cone_struct * Q = k < 0 ? S->weak : S->strong->pieces + k;
+
+        m += fmpz_mat_nrows(Q->ineqs) + fmpz_mat_nrows(Q->eqs);
+    }
+    *h = _fmpz_vec_init(3 * m + 3);
+    *n = 0;
+    for (k = -1; k < S->strong->npieces; k++)
+    {
+        const wc_cone_struct * Q = k < 0 ? S->weak : S->strong->pieces + k;
+
+        for (i = 0; i < fmpz_mat_nrows(Q->ineqs); i++)
+            _fmpz_vec_set(*h + 3 * (*n)++, WC_ROW(Q->ineqs, i), 3);
+        for (i = 0; i < fmpz_mat_nrows(Q->eqs); i++)
+            _fmpz_vec_set(*h + 3 * (*n)++, WC_ROW(Q->eqs, i), 3);
+    }
 }

@@ -1,4 +1,4 @@
-/* stabcert.h -- internal: the proof, cell by cell, that a strong
+/* stabcert.h -- internal: the proof, region by region, that a strong
    stability set is exact (wrenchcone-certificate(5), STABILITY SETS).
    Private.
 
@@ -19,11 +19,10 @@
      closure of the face y at every generator of the cone, and a motion of
      the face y at the sum of F's generators (a convex NNC cone is a union
      of relatively open faces of its closure).
-   - Each cell of the arrangement, over the extreme rays r_1 .. r_k of its
-     closure: in an included face F of a piece or of a moving cone
-     (sum r_j = sum alpha_i G_i with every alpha_i > 0, each r_j a
-     combination with coefficients >= 0), or not weakly stable (a
-     separator).  */
+   - Each region of the tree (setcert.h), over the extreme rays r_1 ..
+     r_k of its closure: in an included face F of a piece or of a moving
+     cone (every r_j in the closure of F, sum r_j in F), or not weakly
+     stable (a separator).  */
 
 #ifndef WC_STABCERT_H
 #define WC_STABCERT_H
@@ -38,7 +37,7 @@
 /* What the proofs of one stability computation share.  */
 typedef struct
 {
-    _wc_setcert base;           /* the cells, and room for rays */
+    _wc_setcert base;           /* room for generators */
     const wc_stability_struct * S;
     _wc_stab_model m;
     slong nfaces;               /* the moving faces: S->moving without */
@@ -62,10 +61,14 @@ int _wc_stabcert_cone(_wc_cone_proof * cp, _wc_stabcert * C, slong j,
 int _wc_stabcert_piece(_wc_piece_proof * pp, _wc_stabcert * C, slong k,
                        wc_error_t err);
 
-/* pf := the proof of cell i (pf initialised for C, reused across cells).
-   Returns WC_OK, or WC_EINTERNAL when a proof cannot be found -- the set
-   is then wrong, and that is a bug.  */
-int _wc_stabcert_cell(_wc_cell_proof * pf, _wc_stabcert * C, slong i,
-                      wc_error_t err);
+/* The tree's classifier (setcert.h) for the strong set: a region in a
+   piece, off the weak cone, or in a moving face's cone.  ctx is C.  */
+int _wc_stabcert_classify(void * ctx, const _wc_region3 * R,
+                          const fmpz * sum, _wc_tree_node * leaf,
+                          fmpz * sep, fmpz * plane, wc_error_t err);
+
+/* *h := the planes the tree's basis is best taken from (*n of them; free
+   with _fmpz_vec_clear(*h, 3 *n + 3)): the weak cone's, the pieces'.  */
+void _wc_stabcert_prefer(fmpz ** h, slong * n, const _wc_stabcert * C);
 
 #endif

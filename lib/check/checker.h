@@ -271,36 +271,34 @@ void _wc_check_cone_clear(wc_check_cone * K);
 int _wc_check_cone_cut(wc_check_cone * K, mpz_t * h);
 
 /* ------------------------------------------------------------------ */
-/* The cells of the central arrangement of nplanes planes h . x = 0
-   (arrcells.c).                                                       */
+/* The regions of a certificate's tree (region.c).                     */
 
-/* The cells are the relatively open cones of constant sign vector: the
-   origin (dim 0), open rays (1), open sectors (2), open chambers (3),
-   each once, sorted by dim, then by sign vector entry by entry in plane
-   order (- < 0 < +).  The rays of a cell are the 1-dim cells in its
-   closure, as increasing indices into this same array: none for the
-   origin, itself for a ray, the two bounding rays of a sector, the
-   extreme rays of a chamber.  The point of a ray is its primitive
-   direction.  */
+/* A relatively open pointed cone of R^3: dim 0 .. 3 (-1: empty), and the
+   extreme rays of its closure, primitive integer vectors, around the
+   cone when dim is 3 (consecutive rays, and the last with the first,
+   span its facets).  The origin has no rays; an open ray one; an open
+   sector two.  */
 typedef struct
 {
-    size_t nplanes;
-    size_t count;           /* cells */
-    mpz_t * point;          /* 3 count: a primitive integer point in each cell (0 for the origin) */
-    unsigned char * dim;    /* count: 0, 1, 2, 3 */
-    signed char * sign;     /* count * nplanes, row-major: sign(h_p . point_i) in {-1,0,1} */
-    size_t * rayoff;        /* count + 1 */
-    size_t * ray;           /* the rays of cell i: ray[rayoff[i] .. rayoff[i+1]) */
-    unsigned long work;     /* dot and cross products computed (cost) */
+    int dim;
+    size_t n, cap;
+    mpz_t * r;              /* 3 cap */
 }
-wc_check_cells;
+wc_check_region;
 
-void _wc_check_cells_init(wc_check_cells * A);   /* all empty */
-void _wc_check_cells_clear(wc_check_cells * A);
-/* A := the cells of the planes H[3p .. 3p+3), p < nplanes (nonzero integer vectors,
-   pairwise non-parallel, among them the three coordinate planes (1,0,0), (0,1,0),
-   (0,0,1), so every cell is pointed).  WC_OK, or WC_EINTERNAL when out of memory. */
-int _wc_check_cells_build(wc_check_cells * A, mpz_t * H, size_t nplanes);
+void _wc_check_region_init(wc_check_region * R);     /* empty */
+void _wc_check_region_clear(wc_check_region * R);
+/* D := R.  1 or -1.  */
+int _wc_check_region_copy(wc_check_region * D, const wc_check_region * R);
+/* out[9 (s_1 + 1) + 3 (s_2 + 1) + (s_3 + 1)] := the region where
+   sign(h_i . x) = s_i (s_i in -1, 0, 1) for the planes h_1, h_2, h_3 (9
+   entries): the 27 relatively open faces of the simplicial fan they cut.
+   1, 0 when the planes are dependent, -1 when out of memory.  */
+int _wc_check_region_basis(wc_check_region * out, mpz_t * h);
+/* out[0], out[1], out[2] := R cut by h . x < 0, = 0, > 0 (dim -1 when
+   empty).  1 or -1.  */
+int _wc_check_region_split(wc_check_region * out, const wc_check_region * R,
+                           mpz_t * h);
 
 /* ------------------------------------------------------------------ */
 /* The moving faces (faces.c).                                         */
@@ -453,6 +451,10 @@ typedef struct
     const wc_json_node * at;
     size_t nineq, neq, nrays, nlines, nfaces;
     mpq_t * ineq, * eq, * rays, * lines;    /* 3 each */
+    mpz_t * zineq, * zeq;       /* the same constraints, primitive
+                                   integer vectors (set when checked) */
+    unsigned char * tight;      /* nfaces x nineq: 1 when inequality a is
+                                   tight on face f (set when checked) */
     size_t * foff, * fray;      /* face f: rays fray[foff[f] .. foff[f+1]) */
     int * fincl;
     long * fdim;
@@ -485,19 +487,25 @@ int _wc_check_read_claim(wc_check_reader * c, wc_check_claim * C,
 /* C describes its pieces consistently.  1, 0 (why written) or -1.  */
 int _wc_check_claim_valid(wc_check_text * why, wc_check_claim * C);
 
-/* What a certificate's cell says, read into storage of the right sizes.  */
+/* The cones Q[0 .. n) each describe themselves consistently (who names
+   them in why: "the cone of moving face"); an empty one (no faces) is
+   left alone.  Sets their zineq, zeq and tight.  1, 0 or -1.  */
+int _wc_check_cones_valid(wc_check_text * why, wc_check_piece * Q, size_t n,
+                          const char * who);
+
+
+/* A leaf of a certificate's tree: its region lies in a face of a piece
+   (in) or of the cone of a member of the family, or is not weakly stable
+   (has_sep).  */
 typedef struct
 {
-    const wc_json_node * at;
-    mpq_t * point;              /* 3 */
     int in;
     int has_sep;
     mpq_t * sep;                /* 3 */
     size_t owner, face;         /* the piece (in) or member of the family
                                    (out), and the face of its cone */
-    const wc_json_node * sum, * rays;
 }
-wc_check_set_cell;
+wc_check_leaf;
 
 /* Everything the check shares.  */
 typedef struct
@@ -509,12 +517,12 @@ typedef struct
     wc_check_claim claim;
     size_t nplanes;
     mpz_t * H;
-    const wc_json_node * cells, * proofs, * moving;
+    const wc_json_node * tree, * proofs, * moving;
     wc_check_piece * mc;        /* the cone of each of the family */
-    wc_check_cells A;
-    wc_check_set_cell cell;
-    mpq_t * G;                  /* 3 (the most rays + 1) */
-    size_t gcap;
+    size_t basis[3];            /* the tree's first three planes */
+    wc_check_leaf leaf;
+    size_t leaves;              /* the tree's leaves */
+    mpq_t * G;                  /* 3 */
     mpq_t * F;                  /* 3 (the most generators of a face) */
     size_t fcap;
     mpq_t * stat;               /* 2 n */
@@ -531,9 +539,14 @@ void _wc_check_set_clear(wc_check_set * K);
 int _wc_check_set_read(wc_check_reader * c, wc_check_set * K,
                        const wc_json_node * root);
 
-/* One cell at v into K->cell; one motion at v into K->S.nudot and
+/* The tree of a set certificate (settree.c): read in full (malformed:
+   c's error), and walked (1, 0 with why, or -1).  */
+int _wc_check_tree_read(wc_check_reader * c, wc_check_set * K);
+int _wc_check_tree_walk(wc_check_scratch * X, wc_check_set * K);
+
+/* One leaf of the tree at v into K->leaf; one motion at v into K->S.nudot and
    K->S.motion_c; one array of rationals at v into K->mult (K->nmult).  */
-int _wc_check_set_read_cell(wc_check_reader * c, wc_check_set * K,
+int _wc_check_set_read_leaf(wc_check_reader * c, wc_check_set * K,
                             const wc_json_node * v);
 int _wc_check_set_read_motion(wc_check_reader * c, wc_check_set * K,
                               const wc_json_node * v);

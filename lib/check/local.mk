@@ -15,7 +15,8 @@ lib_libwccheck_la_SOURCES += \
 	lib/check/problem.c \
 	lib/check/feasible.c \
 	lib/check/cone.c \
-	lib/check/arrcells.c \
+	lib/check/region.c \
+	lib/check/settree.c \
 	lib/check/faces.c \
 	lib/check/stabread.c \
 	lib/check/stabcheck.c \

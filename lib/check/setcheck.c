@@ -19,26 +19,21 @@
    that no wrench sum alpha_i G_i, every alpha_i > 0, has a motion of the
    face.
 
-   Complete (every strongly stable wrench is claimed): the certificate
-   lists planes, whose arrangement cuts R^3 into cells (the checker finds
-   them itself, arrcells.c, with the extreme rays r_1 .. r_k of each
-   cell's closure), and proves each cell
+   Complete (every strongly stable wrench is claimed): a tree of cuts by
+   the listed planes splits R^3 into relatively open regions, which the
+   checker computes itself (settree.c, region.c), and each leaf proves its
+   region in an included face of a piece, or out of the strongly stable
+   set: not weakly stable (a separator), or in an included face of the
+   cone of a moving face.  Those cones are proved here: a motion of the
+   face's closure at every generator (the closed cone moves) and a motion
+   of the face at the sum of each included face's generators (a convex
+   NNC cone is the union of the relatively open faces of its closure that
+   it meets); their two descriptions agree (setread.c), so the leaves may
+   place regions by the inequalities.
 
-   - in the claim: sum r_j = sum alpha_i G_i with every alpha_i > 0 and
-     each r_j a combination of the G_i with coefficients >= 0, for an
-     included face F; then the cell lies in F (it lies in the relative
-     interior of the smallest face of cone(G_F) holding every r_j, which
-     holds sum r_j in its relative interior: cone(G_F) itself);
-   - or out of the strongly stable set: a separator y with y . r_j >= 0,
-     y . sum r_j > 0 and y on the dual side of every friction edge (not
-     weakly stable); or a moving face whose closed cone holds every r_j (a
-     motion of the face's closure at each) and whose cone holds sum r_j (a
-     motion of the face): a moving face's cone is a convex NNC cone, a
-     union of relatively open faces of its closure, and the cell lies in
-     the relative interior of the one that holds sum r_j.
-
-   The cells cover R^3, so a strongly stable wrench lies in a cell of the
-   first kind, hence in the claim.  Reading is done in full first, so that
+   The leaves cover R^3, so a strongly stable wrench lies in a leaf of
+   the first kind, hence in the claim.  Reading is done in full first, so
+   that
    a malformed file is told apart from a false claim.  */
 
 #include <stdlib.h>
@@ -62,12 +57,11 @@ zcmp3(mpz_t * a, mpz_t * b)
 }
 
 /* The planes: integer, primitive, first nonzero entry positive, strictly
-   increasing (so no two are parallel), the coordinate planes among them.
-   1 or 0.  */
+   increasing (so no two are parallel).  1 or 0.  */
 static int
 check_planes(wc_check_text * why, wc_check_set * K)
 {
-    size_t k, found = 0;
+    size_t k;
     mpz_t g;
     int j, ok = 1;
 
@@ -98,38 +92,9 @@ check_planes(wc_check_text * why, wc_check_set * K)
                           "before it (the planes are sorted and distinct)");
             ok = 0;
         }
-        else if ((mpz_sgn(h[0]) == 0) + (mpz_sgn(h[1]) == 0)
-                 + (mpz_sgn(h[2]) == 0) == 2)
-            found++;            /* primitive, positive: a unit vector */
     }
     mpz_clear(g);
-    if (ok && found != 3)
-    {
-        _wc_check_put(why, "the planes do not hold the three coordinate "
-                      "planes");
-        ok = 0;
-    }
     return ok;
-}
-
-/* "cell 12 (point (1, 0, -1)): " */
-static void
-cell_says(wc_check_text * why, wc_check_set * K, size_t i)
-{
-    _wc_check_putf(why, "cell %lu ", (unsigned long) i + 1);
-    _wc_check_put_zvec(why, K->A.point + 3 * i, 3);
-    _wc_check_put(why, ": ");
-}
-
-/* Start why with the cell (returns where it ended before); unmark drops
-   it again unless the check failed.  */
-static size_t
-mark(wc_check_text * why, wc_check_set * K, size_t i)
-{
-    size_t at = why->len;
-
-    cell_says(why, K, i);
-    return at;
 }
 
 static void
@@ -139,56 +104,6 @@ unmark(wc_check_text * why, size_t at, int holds)
         return;
     why->len = at;
     why->s[at] = '\0';
-}
-
-/* K->G := the rays of cell i (k of them), and the sum after them.  */
-static size_t
-cell_rays(wc_check_set * K, size_t i)
-{
-    size_t k, nr = K->A.rayoff[i + 1] - K->A.rayoff[i];
-    int j;
-
-    for (j = 0; j < 3; j++)
-        mpq_set_ui(K->G[3 * nr + j], 0, 1);
-    for (k = 0; k < nr; k++)
-    {
-        mpz_t * r = K->A.point + 3 * K->A.ray[K->A.rayoff[i] + k];
-
-        for (j = 0; j < 3; j++)
-        {
-            mpq_set_z(K->G[3 * k + j], r[j]);
-            mpq_add(K->G[3 * nr + j], K->G[3 * nr + j], K->G[3 * k + j]);
-        }
-    }
-    return nr;
-}
-
-/* The listed point lies in cell i.  1 or 0.  */
-static int
-check_point(wc_check_scratch * X, wc_check_set * K, size_t i)
-{
-    size_t p;
-    int j;
-
-    for (p = 0; p < K->nplanes; p++)
-    {
-        mpq_set_ui(X->a, 0, 1);
-        for (j = 0; j < 3; j++)
-        {
-            mpq_set_z(X->b, K->H[3 * p + j]);
-            _wc_check_qaddmul(X->a, X->b, K->cell.point[j], X->t);
-        }
-        if (mpq_sgn(X->a) != K->A.sign[i * K->nplanes + p])
-        {
-            cell_says(X->why, K, i);
-            _wc_check_put(X->why, "its listed point ");
-            _wc_check_put_qvec(X->why, K->cell.point, 3);
-            _wc_check_putf(X->why, " is on the wrong side of plane %lu",
-                           (unsigned long) p + 1);
-            return 0;
-        }
-    }
-    return 1;
 }
 
 /* K->F := the generators of face f of Q (f = Q->nfaces: of Q itself):
@@ -212,90 +127,6 @@ face_generators(wc_check_set * K, const wc_check_piece * Q, size_t f)
             mpq_neg(K->F[3 * (g + 1) + c], Q->lines[3 * l + c]);
         }
     return g;
-}
-
-/* The coefficients at v (read into K->mult) combine the ng generators
-   K->F into x, each > 0 (strict) or >= 0.  1 or 0 (why after the mark);
-   -1 when out of memory.  */
-static int
-combines(wc_check_scratch * X, wc_check_set * K, const wc_json_node * v,
-         size_t ng, mpq_t * x, int strict)
-{
-    wc_check_reader quiet = { NULL, NULL, WC_OK };
-    wc_error_t e;
-    size_t k;
-    int j, ok;
-
-    wc_error_init(e);
-    quiet.err = e;
-    ok = _wc_check_set_read_mult(&quiet, K, v) == WC_OK;
-    wc_error_clear(e);
-    if (!ok)
-        return -1;
-    if (K->nmult != ng)
-    {
-        _wc_check_putf(X->why, "%lu coefficients for %lu generators",
-                       (unsigned long) K->nmult, (unsigned long) ng);
-        return 0;
-    }
-    for (j = 0; j < 3; j++)
-        mpq_set_ui(X->s[j], 0, 1);
-    for (k = 0; k < ng; k++)
-    {
-        if (strict ? mpq_sgn(K->mult[k]) <= 0 : mpq_sgn(K->mult[k]) < 0)
-        {
-            _wc_check_putf(X->why, "coefficient %lu is ", (unsigned long) k
-                           + 1);
-            _wc_check_put_q(X->why, K->mult[k]);
-            _wc_check_put(X->why, strict ? ", not > 0" : ", not >= 0");
-            return 0;
-        }
-        for (j = 0; j < 3; j++)
-            _wc_check_qaddmul(X->s[j], K->mult[k], K->F[3 * k + j], X->t);
-    }
-    if (!_wc_check_qvec_equal(X->s, x, 3))
-    {
-        _wc_check_put(X->why, "the combination is ");
-        _wc_check_put_qvec(X->why, X->s, 3);
-        _wc_check_put(X->why, ", not ");
-        _wc_check_put_qvec(X->why, x, 3);
-        return 0;
-    }
-    return 1;
-}
-
-/* A cell in an included face of a piece (in) or of the cone of a moving
-   face or plan string (out): it lies in that face.  1, 0 or -1.  */
-static int
-check_located(wc_check_scratch * X, wc_check_set * K, size_t i, size_t nr)
-{
-    const wc_check_set_cell * C = &K->cell;
-    const wc_check_piece * Q = C->in ? K->claim.pc + C->owner
-        : K->mc + C->owner;
-    size_t k, ng, at = mark(X->why, K, i);
-    int holds;
-
-    _wc_check_putf(X->why, "in face %lu of %s %lu: ",
-                   (unsigned long) C->face + 1, C->in ? "piece" : K->plan
-                   ? "the cone of string" : "the cone of moving face",
-                   (unsigned long) C->owner + 1);
-    if (!Q->fincl[C->face])
-    {
-        _wc_check_put(X->why, "the cone does not include that face");
-        return 0;
-    }
-    ng = face_generators(K, Q, C->face);
-    holds = combines(X, K, C->sum, ng, K->G + 3 * nr, 1);
-    if (holds == 1 && C->rays->len != nr)
-    {
-        _wc_check_putf(X->why, "%lu ray combinations for %lu rays",
-                       (unsigned long) C->rays->len, (unsigned long) nr);
-        holds = 0;
-    }
-    for (k = 0; k < nr && holds == 1; k++)
-        holds = combines(X, K, C->rays->items + k, ng, K->G + 3 * k, 0);
-    unmark(X->why, at, holds);
-    return holds;
 }
 
 /* One motion of moving face j (of its closure when closed) at the wrench
@@ -457,62 +288,12 @@ check_piece(wc_check_scratch * X, wc_check_set * K, size_t k)
     return holds;
 }
 
-/* A cell outside the set, not weakly stable.  1 or 0.  */
+/* Room for the generators of the largest cone.  1 or -1.  */
 static int
-check_separated(wc_check_scratch * X, wc_check_set * K, size_t i, size_t nr)
+room_for_generators(wc_check_set * K)
 {
-    wc_check_text * why = X->why;
-    mpq_t * y = K->cell.sep;
-    size_t k, at = mark(why, K, i);
-    int holds;
+    size_t i, most = 1;
 
-    for (k = 0; k <= nr; k++)
-    {
-        _wc_check_qdot3(X->a, y, K->G + 3 * k, X->t);
-        if (k < nr ? mpq_sgn(X->a) < 0 : mpq_sgn(X->a) <= 0)
-        {
-            _wc_check_put(why, "the separator y = ");
-            _wc_check_put_qvec(why, y, 3);
-            _wc_check_put(why, k < nr ? " has y . r < 0 at its ray "
-                          : " has y . (the sum of its rays) <= 0: ");
-            _wc_check_put_qvec(why, K->G + 3 * k, 3);
-            return 0;
-        }
-    }
-    holds = _wc_check_separates(X, y);
-    unmark(why, at, holds);
-    return holds;
-}
-
-/* Cell i, read into K->cell.  1, 0 or -1.  */
-static int
-check_cell(wc_check_scratch * X, wc_check_set * K, size_t i)
-{
-    size_t nr = cell_rays(K, i);
-    int holds = check_point(X, K, i);
-
-    if (holds != 1)
-        return holds;
-    if (K->cell.has_sep)
-        return check_separated(X, K, i, nr);
-    return check_located(X, K, i, nr);
-}
-
-/* The walk of the planes' arrangement, and room for the rays of a cell
-   and the generators of a face.  */
-static int
-build_cells(wc_check_set * K)
-{
-    size_t i, most = 0;
-
-    if (_wc_check_cells_build(&K->A, K->H, K->nplanes) != WC_OK)
-        return -1;
-    for (i = 0; i < K->A.count; i++)
-        if (K->A.rayoff[i + 1] - K->A.rayoff[i] > most)
-            most = K->A.rayoff[i + 1] - K->A.rayoff[i];
-    K->gcap = most + 1;
-    K->G = _wc_check_qvec_new(_wc_check_times(3, K->gcap));
-    most = 1;
     for (i = 0; i < K->claim.npieces + K->S.nfaces; i++)
     {
         const wc_check_piece * Q = i < K->claim.npieces ? K->claim.pc + i
@@ -523,20 +304,16 @@ build_cells(wc_check_set * K)
     }
     K->fcap = most;
     K->F = _wc_check_qvec_new(_wc_check_times(3, K->fcap));
-    return K->G != NULL && K->F != NULL ? 1 : -1;
+    return K->F != NULL ? 1 : -1;
 }
 
 static int
 check_set(wc_check_text * why, wc_check_set * K)
 {
     wc_check_scratch X;
-    wc_check_reader quiet = { NULL, NULL, WC_OK };
-    wc_error_t e;
     size_t i;
     int holds = -1;
 
-    wc_error_init(e);
-    quiet.err = e;
     if (!_wc_check_scratch_init(&X, &K->S, why))
         goto cleanup;
     holds = check_planes(why, K);
@@ -546,27 +323,18 @@ check_set(wc_check_text * why, wc_check_set * K)
         holds = K->plan ? _wc_check_plan_strings(why, &K->S)
             : _wc_check_face_list(&X);
     if (holds == 1)
-        holds = build_cells(K);
+        holds = room_for_generators(K);
+    if (holds == 1)
+        holds = _wc_check_cones_valid(why, K->mc, K->S.nfaces, K->plan
+                                      ? "the cone of string"
+                                      : "the cone of moving face");
     for (i = 0; holds == 1 && i < K->claim.npieces; i++)
         holds = check_piece(&X, K, i);
     for (i = 0; holds == 1 && i < K->S.nfaces; i++)
         holds = check_cone(&X, K, i);
-    if (holds == 1 && K->A.count != K->cells->len)
-    {
-        _wc_check_putf(why, "the planes cut R^3 into %lu cells, but the "
-                       "certificate lists %lu", (unsigned long) K->A.count,
-                       (unsigned long) K->cells->len);
-        holds = 0;
-    }
-    for (i = 0; holds == 1 && i < K->A.count; i++)
-    {
-        if (_wc_check_set_read_cell(&quiet, K, K->cells->items + i) != WC_OK)
-            holds = -1;
-        else
-            holds = check_cell(&X, K, i);
-    }
+    if (holds == 1)
+        holds = _wc_check_tree_walk(&X, K);
 cleanup:
-    wc_error_clear(e);
     if (why->oom)
         holds = -1;
     _wc_check_scratch_clear(&X);
@@ -586,13 +354,13 @@ _wc_check_set_certificate(wc_check_reader * c, const wc_json_node * root,
     if (_wc_check_set_read(c, &K, root) == WC_OK)
     {
         _wc_check_putf(what, "the %s set is exact: %lu piece%s, %lu %s%s, "
-                       "%lu cells", plan ? "goal" : "strongly stable",
+                       "%lu regions", plan ? "goal" : "strongly stable",
                        (unsigned long) K.claim.npieces,
                        K.claim.npieces == 1 ? "" : "s",
                        (unsigned long) K.S.nfaces,
                        plan ? "string" : "moving face",
                        K.S.nfaces == 1 ? "" : "s",
-                       (unsigned long) K.cells->len);
+                       (unsigned long) K.leaves);
         h = check_set(why, &K);
         if (h < 0)
             _wc_check_nomem(c);

@@ -7,7 +7,7 @@
 
    Everything is read in full before any of it is checked, so that a
    malformed file is told apart from a false claim; the checks then read
-   each cell, motion and multiplier list again, into storage of one.  */
+   each leaf, motion and multiplier list again, into storage of one.  */
 
 #include <stdlib.h>
 #include <string.h>
@@ -20,7 +20,6 @@ _wc_check_set_init(wc_check_set * K)
 {
     memset(K, 0, sizeof *K);
     _wc_check_stability_init(&K->S);
-    _wc_check_cells_init(&K->A);
 }
 
 void
@@ -28,14 +27,12 @@ _wc_check_set_clear(wc_check_set * K)
 {
     size_t n2 = 2 * K->S.P.n, k;
 
-    _wc_check_qvec_free(K->cell.point, 3);
-    _wc_check_qvec_free(K->cell.sep, 3);
-    _wc_check_qvec_free(K->G, 3 * K->gcap);
+    _wc_check_qvec_free(K->leaf.sep, 3);
+    _wc_check_qvec_free(K->G, 3);
     _wc_check_qvec_free(K->mult, K->multcap);
     _wc_check_qvec_free(K->stat, n2);
     _wc_check_qvec_free(K->F, 3 * K->fcap);
     _wc_check_zvec_free(K->H, 3 * K->nplanes);
-    _wc_check_cells_clear(&K->A);
     _wc_check_claim_clear(&K->claim);
     for (k = 0; K->mc != NULL && k < K->S.nfaces; k++)
         _wc_check_piece_clear(K->mc + k);
@@ -85,60 +82,6 @@ read_planes(wc_check_reader * c, wc_check_set * K, const wc_json_node * root)
     return c->status;
 }
 
-/* An index below limit at o[key], into *i.  */
-static int
-read_index(wc_check_reader * c, const wc_json_node * o, const char * key,
-           size_t limit, size_t * i)
-{
-    const wc_json_node * x = _wc_json_object_get(o, key);
-    mpq_t q;
-    int bad;
-
-    if (x == NULL)
-        return _wc_check_bad(c, o, "missing key '%s'", key);
-    mpq_init(q);
-    bad = _wc_check_rational(c, x, q) != WC_OK;
-    if (!bad && (mpz_cmp_ui(mpq_denref(q), 1) != 0 || mpq_sgn(q) < 0
-                 || mpz_cmp_ui(mpq_numref(q), limit) >= 0))
-        bad = _wc_check_bad(c, x, "'%s' must be an integer from 0 to %ld",
-                            key, (long) limit - 1) != WC_OK;
-    if (!bad)
-        *i = mpz_get_ui(mpq_numref(q));
-    mpq_clear(q);
-    return bad ? WC_EINPUT : WC_OK;
-}
-
-/* The cell at v into K->cell (storage allocated once).  */
-int
-_wc_check_set_read_cell(wc_check_reader * c, wc_check_set * K, const wc_json_node * v)
-{
-    wc_check_set_cell * C = &K->cell;
-    const wc_json_node * x;
-    const wc_check_piece * Q;
-
-    C->at = v;
-    if (_wc_check_want_object(c, v) != WC_OK
-        || _wc_check_vector(c, v, "point", C->point, 3) != WC_OK
-        || _wc_check_member(c, v, "in", WC_CHECK_BOOL, &x) != WC_OK)
-        return WC_EINPUT;
-    C->in = x->type == WC_JSON_TRUE;
-    C->has_sep = !C->in && !K->plan
-        && _wc_json_object_get(v, "separator") != NULL;
-    C->sum = C->rays = NULL;
-    if (C->has_sep)
-        return _wc_check_vector(c, v, "separator", C->sep, 3);
-    if (read_index(c, v, C->in ? "piece" : K->plan ? "string" : "face",
-                   C->in ? K->claim.npieces : K->S.nfaces, &C->owner)
-        != WC_OK)
-        return WC_EINPUT;
-    Q = C->in ? K->claim.pc + C->owner : K->mc + C->owner;
-    if (read_index(c, v, C->in ? "piece_face" : "cone_face", Q->nfaces,
-                   &C->face) != WC_OK
-        || _wc_check_member(c, v, "sum", WC_CHECK_ARRAY, &C->sum) != WC_OK)
-        return WC_EINPUT;
-    return _wc_check_member(c, v, "rays", WC_CHECK_ARRAY, &C->rays);
-}
-
 /* The motion object at v: nudot and c into S's scratch.  */
 int
 _wc_check_set_read_motion(wc_check_reader * c, wc_check_set * K, const wc_json_node * v)
@@ -170,28 +113,6 @@ _wc_check_set_read_mult(wc_check_reader * c, wc_check_set * K, const wc_json_nod
         if (_wc_check_rational(c, v->items + k, K->mult[k]) != WC_OK)
             return WC_EINPUT;
     return WC_OK;
-}
-
-/* Every cell, in full, so that the format is known good before any
-   claim is checked.  */
-static int
-read_cells(wc_check_reader * c, wc_check_set * K)
-{
-    size_t k, j;
-
-    for (k = 0; k < K->cells->len && c->status == WC_OK; k++)
-    {
-        wc_check_set_cell * C = &K->cell;
-
-        if (_wc_check_set_read_cell(c, K, K->cells->items + k) != WC_OK)
-            break;
-        if (C->sum != NULL)
-            _wc_check_set_read_mult(c, K, C->sum);
-        for (j = 0; C->rays != NULL && j < C->rays->len
-             && c->status == WC_OK; j++)
-            _wc_check_set_read_mult(c, K, C->rays->items + j);
-    }
-    return c->status;
 }
 
 /* The proofs of the pieces: one object per piece, with static (an array
@@ -349,13 +270,13 @@ _wc_check_set_read(wc_check_reader * c, wc_check_set * K, const wc_json_node * r
         || read_planes(c, K, root) != WC_OK)
         return c->status;
     n2 = 2 * K->S.P.n;
-    K->cell.point = _wc_check_qvec_new(3);
+    K->G = _wc_check_qvec_new(3);
     K->stat = _wc_check_qvec_new(n2);
-    K->cell.sep = _wc_check_qvec_new(3);
+    K->leaf.sep = _wc_check_qvec_new(3);
     K->S.nudot = _wc_check_qvec_new(3);
     K->S.motion_c = _wc_check_qvec_new(n2);
     K->S.nmc = n2;
-    if (K->cell.point == NULL || K->stat == NULL || K->cell.sep == NULL
+    if (K->G == NULL || K->stat == NULL || K->leaf.sep == NULL
         || K->S.nudot == NULL || K->S.motion_c == NULL)
         return _wc_check_nomem(c);
     if (K->plan)
@@ -367,11 +288,11 @@ _wc_check_set_read(wc_check_reader * c, wc_check_set * K, const wc_json_node * r
             _wc_check_signs(c, &K->S);
     }
     if (c->status != WC_OK || read_moving(c, K, root) != WC_OK
-        || _wc_check_member(c, root, "cells", WC_CHECK_ARRAY, &K->cells)
+        || _wc_check_member(c, root, "tree", WC_CHECK_ARRAY, &K->tree)
         != WC_OK)
         return c->status;
     if (read_proofs(c, K, root) != WC_OK)
         return c->status;
-    return read_cells(c, K);
+    return _wc_check_tree_read(c, K);
 }
 

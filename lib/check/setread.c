@@ -31,6 +31,9 @@ _wc_check_piece_clear(wc_check_piece * Q)
     free(Q->fray);
     free(Q->fincl);
     free(Q->fdim);
+    _wc_check_zvec_free(Q->zineq, 3 * Q->nineq);
+    _wc_check_zvec_free(Q->zeq, 3 * Q->neq);
+    free(Q->tight);
 }
 
 void
@@ -247,15 +250,13 @@ typedef struct
     mpq_t d, t;
     mpz_t * z;          /* 3 */
     mpz_t g;
+    const char * who;   /* "the claimed set's piece" */
 }
 claim_scratch;
 
-/* "piece 2: " then the message.  */
-static void
-piece_says(wc_check_text * why, size_t k)
-{
-    _wc_check_putf(why, "the claimed set's piece %lu ", (unsigned long) k + 1);
-}
+/* "the claimed set's piece 2 " then the message.  */
+#define piece_says(why, k) \
+    _wc_check_putf(why, "%s %lu ", X->who, (unsigned long) (k) + 1)
 
 /* Every ray in the closure of piece k, every line on every constraint.
    1 or 0.  */
@@ -303,7 +304,7 @@ piece_vectors(wc_check_text * why, claim_scratch * X,
 static mpq_t *
 gather(claim_scratch * X, mpq_t * a, size_t na, mpq_t * b, size_t nb)
 {
-    size_t i, n = na + nb;
+    size_t i, n = na + nb > 0 ? na + nb : 1;
 
     if (n > X->cap)
     {
@@ -392,11 +393,11 @@ face_rays(wc_check_text * why, claim_scratch * X, const wc_check_piece * Q,
           size_t k, size_t f)
 {
     size_t a, r, j;
-    unsigned char * tight = malloc(Q->nineq + 1), * listed;
+    unsigned char * tight = Q->tight + f * Q->nineq, * listed;
     int holds = 1;
 
     listed = malloc(Q->nrays + 1);
-    if (tight == NULL || listed == NULL)
+    if (listed == NULL)
         holds = -1;
     for (a = 0; holds == 1 && a < Q->nineq; a++)
     {
@@ -432,7 +433,6 @@ face_rays(wc_check_text * why, claim_scratch * X, const wc_check_piece * Q,
             holds = 0;
         }
     }
-    free(tight);
     free(listed);
     return holds;
 }
@@ -448,6 +448,15 @@ piece_spaces(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
     mpq_t * v;
     int rk;
 
+    Q->zineq = _wc_check_zvec_new(_wc_check_times(3, Q->nineq));
+    Q->zeq = _wc_check_zvec_new(_wc_check_times(3, Q->neq));
+    Q->tight = malloc(_wc_check_times(Q->nfaces, Q->nineq) + 1);
+    if (Q->zineq == NULL || Q->zeq == NULL || Q->tight == NULL)
+        return -1;
+    for (i = 0; i < Q->nineq + Q->neq; i++)
+        _wc_check_primitive(i < Q->nineq ? Q->zineq + 3 * i
+                            : Q->zeq + 3 * (i - Q->nineq),
+                            constraint(Q, i), X->g);
     if ((v = gather(X, Q->ineq, Q->nineq, Q->eq, Q->neq)) == NULL)
         return -1;
     rk = rank3(v, Q->nineq + Q->neq, X->w, X->d, X->t);
@@ -513,13 +522,15 @@ piece_spaces(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
 }
 
 int
-_wc_check_claim_valid(wc_check_text * why, wc_check_claim * C)
+_wc_check_cones_valid(wc_check_text * why, wc_check_piece * Q, size_t n,
+                      const char * who)
 {
     claim_scratch X;
     size_t k;
-    int holds = 1, interior = 0;
+    int holds = 1;
 
     memset(&X, 0, sizeof X);
+    X.who = who;
     X.w = _wc_check_qvec_new(3);
     X.z = _wc_check_zvec_new(3);
     mpq_init(X.d);
@@ -527,27 +538,13 @@ _wc_check_claim_valid(wc_check_text * why, wc_check_claim * C)
     mpz_init(X.g);
     if (X.w == NULL || X.z == NULL)
         holds = -1;
-    if (holds == 1 && C->empty != (C->npieces == 0))
+    for (k = 0; holds == 1 && k < n; k++)
     {
-        _wc_check_putf(why, "the claimed set says empty is %s with %lu "
-                       "piece%s", C->empty ? "true" : "false",
-                       (unsigned long) C->npieces,
-                       C->npieces == 1 ? "" : "s");
-        holds = 0;
-    }
-    for (k = 0; holds == 1 && k < C->npieces; k++)
-    {
-        holds = piece_vectors(why, &X, C->pc + k, k);
+        if (Q[k].nfaces == 0 && Q[k].nrays + Q[k].nlines == 0)
+            continue;           /* empty */
+        holds = piece_vectors(why, &X, Q + k, k);
         if (holds == 1)
-            holds = piece_spaces(why, &X, C->pc + k, k);
-        interior |= C->pc[k].dim == 3;
-    }
-    if (holds == 1 && interior != C->interior)
-    {
-        _wc_check_putf(why, "the claimed set says interior is %s, but %s "
-                       "piece has dimension 3", C->interior ? "true"
-                       : "false", interior ? "a" : "no");
-        holds = 0;
+            holds = piece_spaces(why, &X, Q + k, k);
     }
     _wc_check_qvec_free(X.w, 3);
     _wc_check_qvec_free(X.v, 3 * X.cap);
@@ -555,5 +552,40 @@ _wc_check_claim_valid(wc_check_text * why, wc_check_claim * C)
     mpq_clear(X.d);
     mpq_clear(X.t);
     mpz_clear(X.g);
+    return holds;
+}
+
+int
+_wc_check_claim_valid(wc_check_text * why, wc_check_claim * C)
+{
+    size_t k;
+    int holds = 1, interior = 0;
+
+    if (C->empty != (C->npieces == 0))
+    {
+        _wc_check_putf(why, "the claimed set says empty is %s with %lu "
+                       "piece%s", C->empty ? "true" : "false",
+                       (unsigned long) C->npieces,
+                       C->npieces == 1 ? "" : "s");
+        return 0;
+    }
+    for (k = 0; k < C->npieces; k++)
+        if (C->pc[k].nfaces == 0)
+        {
+            _wc_check_putf(why, "the claimed set's piece %lu is empty",
+                           (unsigned long) k + 1);
+            return 0;
+        }
+    holds = _wc_check_cones_valid(why, C->pc, C->npieces,
+                                  "the claimed set's piece");
+    for (k = 0; k < C->npieces; k++)
+        interior |= C->pc[k].dim == 3;
+    if (holds == 1 && interior != C->interior)
+    {
+        _wc_check_putf(why, "the claimed set says interior is %s, but %s "
+                       "piece has dimension 3", C->interior ? "true"
+                       : "false", interior ? "a" : "no");
+        holds = 0;
+    }
     return holds;
 }

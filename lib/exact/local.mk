@@ -12,6 +12,7 @@ lib_libwc_la_SOURCES += \
 	lib/exact/arrangement.c \
 	lib/exact/cells.c \
 	lib/exact/cellrays.c \
+	lib/exact/region3.c \
 	lib/exact/incidence.c \
 	lib/exact/box.c \
 	lib/exact/set.c
@@ -30,4 +31,5 @@ noinst_HEADERS += \
 	lib/exact/arrangement.h \
 	lib/exact/incidence.h \
 	lib/exact/box.h \
+	lib/exact/region3.h \
 	lib/exact/cddconv.inc

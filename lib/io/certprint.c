@@ -118,78 +118,53 @@ _wc_fprint_piece_proof(FILE * out, const _wc_piece_proof * pp, slong nexcl,
 }
 
 void
-_wc_fprint_planes(FILE * out, const wc_cells_t A)
+_wc_fprint_planes(FILE * out, const _wc_settree * T)
 {
     slong i;
 
     fputs(",\n \"planes\": [", out);
-    for (i = 0; i < A->nplanes; i++)
+    for (i = 0; i < T->nplanes; i++)
     {
         if (i > 0)
             fputs(", ", out);
-        _wc_fprint_zvec(out, WC_ROW(A->planes, i), 3, 1);
+        _wc_fprint_zvec(out, T->planes + 3 * i, 3, 1);
     }
     fputc(']', out);
 }
 
-void
-_wc_fprint_cell_proof(FILE * out, const _wc_cell_proof * pf,
-                      const fmpz * point, const char * excluded)
-{
-    slong j;
-
-    fputs("{\"point\": ", out);
-    _wc_fprint_zvec(out, point, 3, 1);
-    fprintf(out, ", \"in\": %s", _wc_tf(pf->reason == WC_CELL_IN));
-    if (pf->reason == WC_CELL_NOT_WEAK)
-    {
-        fputs(", \"separator\": ", out);
-        _wc_fprint_scaled(out, pf->sep, 3);
-    }
-    else
-    {
-        fprintf(out, ", \"%s\": %ld, \"%s\": %ld, \"sum\": ",
-                pf->reason == WC_CELL_IN ? "piece" : excluded,
-                (long) pf->owner, pf->reason == WC_CELL_IN
-                ? "piece_face" : "cone_face", (long) pf->face);
-        wc_fprint_qvec(out, pf->alpha, pf->ngen, 1);
-        fputs(", \"rays\": [", out);
-        for (j = 0; j < pf->nrays; j++)
-        {
-            if (j > 0)
-                fputs(", ", out);
-            wc_fprint_qvec(out, pf->beta + j * pf->ngen, pf->ngen, 1);
-        }
-        fputc(']', out);
-    }
-    fputc('}', out);
-}
-
 int
-_wc_fprint_cells(FILE * out, _wc_setcert * C,
-                 int (* prove)(_wc_cell_proof *, void *, slong, wc_error_t),
-                 void * ctx, const char * excluded, wc_error_t err)
+_wc_fprint_tree(FILE * out, const _wc_settree * T, const char * excluded,
+                wc_error_t err)
 {
-    const wc_cells_struct * A = C->A;
-    _wc_cell_proof pf;
     slong i;
-    int status = WC_OK;
 
-    fputs(",\n \"cells\": [", out);
-    _wc_cell_proof_init(&pf, C);
-    for (i = 0; i < A->count && status == WC_OK; i++)
+    fprintf(out, ",\n \"tree\": [{\"basis\": [%ld, %ld, %ld]}",
+            (long) T->basis[0], (long) T->basis[1], (long) T->basis[2]);
+    for (i = 0; i < T->n; i++)
     {
-        _wc_tick("cells of the certificate", i, A->count);
-        status = prove(&pf, ctx, i, err);
-        if (status == WC_OK)
+        const _wc_tree_node * v = T->node + i;
+
+        fputs(",\n  ", out);
+        switch (v->kind)
         {
-            fputs(i > 0 ? ",\n  " : "\n  ", out);
-            _wc_fprint_cell_proof(out, &pf, WC_ROW(A->point, i), excluded);
+        case WC_NODE_EMPTY:
+            fputs("null", out);
+            break;
+        case WC_NODE_SPLIT:
+            fprintf(out, "{\"split\": %ld}", (long) v->a);
+            break;
+        case WC_NODE_NOT_WEAK:
+            fputs("{\"in\": false, \"separator\": ", out);
+            _wc_fprint_zvec(out, T->sep + 3 * v->a, 3, 1);
+            fputc('}', out);
+            break;
+        default:
+            fprintf(out, "{\"in\": %s, \"%s\": %ld, \"%s\": %ld}",
+                    _wc_tf(v->kind == WC_NODE_IN), v->kind == WC_NODE_IN
+                    ? "piece" : excluded, (long) v->a, v->kind == WC_NODE_IN
+                    ? "piece_face" : "cone_face", (long) v->b);
         }
     }
-    _wc_cell_proof_clear(&pf, C);
-    if (status != WC_OK)
-        return status;
     fputs("]}\n", out);
     return ferror(out) ? wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                       "write error") : WC_OK;

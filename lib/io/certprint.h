@@ -28,21 +28,12 @@ void _wc_fprint_cone_proof(FILE * out, const _wc_cone_proof * cp, slong n);
 void _wc_fprint_piece_proof(FILE * out, const _wc_piece_proof * pp,
                             slong nexcl, slong n);
 
-/* ",\n "planes": [..]" of A.  */
-void _wc_fprint_planes(FILE * out, const wc_cells_t A);
+/* ",\n "planes": [..]" of T.  */
+void _wc_fprint_planes(FILE * out, const _wc_settree * T);
 
-/* One cell: its point, "in", and its proof; excluded names the key of
-   an excluding cone ("face", "string").  */
-void _wc_fprint_cell_proof(FILE * out, const _wc_cell_proof * pf,
-                           const fmpz * point, const char * excluded);
-
-/* ",\n "cells": [..]}" and a newline: every cell of C->A proved by
-   prove(pf, ctx, i, err) and written, excluded as above.  Returns WC_OK,
-   prove's failure (nothing more written), or WC_EINTERNAL on a write
-   error.  */
-int _wc_fprint_cells(FILE * out, _wc_setcert * C,
-                     int (* prove)(_wc_cell_proof *, void *, slong,
-                                   wc_error_t),
-                     void * ctx, const char * excluded, wc_error_t err);
+/* ",\n "tree": [..]}" and a newline: T's nodes, a leaf in an excluding
+   cone naming it by the key excluded ("face", "string").  */
+int _wc_fprint_tree(FILE * out, const _wc_settree * T, const char * excluded,
+                    wc_error_t err);
 
 #endif

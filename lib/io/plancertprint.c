@@ -5,10 +5,12 @@
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   The cells are proved one at a time (analysis/plancert.h) and written as
-   they are proved.  */
+   The tree is grown (analysis/plancert.h) before anything is written, so
+   a set the proof contradicts writes nothing.  */
 
 #include <config.h>
+
+#include <flint/fmpz_vec.h>
 
 #include "exact/vec3.h"
 #include "analysis/plancert.h"
@@ -72,31 +74,37 @@ put_pieces(FILE * out, _wc_plancert * C, wc_error_t err)
     return status;
 }
 
-static int
-prove_cell(_wc_cell_proof * pf, void * ctx, slong i, wc_error_t err)
-{
-    return _wc_plancert_cell(pf, (_wc_plancert *) ctx, i, err);
-}
-
 int
 wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
                            const wc_plan_t R, wc_error_t err)
 {
-    const wc_cells_struct * A = R->cells;
     _wc_plancert C;
+    _wc_settree T;
+    fmpz * h;
+    slong nh;
     int status;
 
     if ((status = wc_problem_check_fixels(P, WC_PLAN_CERT_MAX_FIXELS, 0,
                                           "a plan certificate", err))
         != WC_OK)
         return status;
-    if (A->nplanes > WC_CERT_MAX_PLANES)
-        return wc_error_set(err, WC_EINPUT, NULL, 0, 0, "the certificate "
-                            "would list %ld planes, and verify reads at "
-                            "most %d", (long) A->nplanes,
-                            WC_CERT_MAX_PLANES);
-    if ((status = _wc_plancert_init(&C, P, R, err)) != WC_OK)
+    _wc_settree_init(&T);
+    status = _wc_plancert_init(&C, P, R, err);
+    if (status == WC_OK)
     {
+        _wc_plancert_prefer(&h, &nh, &C);
+        status = _wc_settree_build(&T, h, nh, _wc_plancert_classify, &C,
+                                   err);
+        _fmpz_vec_clear(h, 3 * nh + 3);
+    }
+    if (status == WC_OK && T.nplanes > WC_CERT_MAX_PLANES)
+        status = wc_error_set(err, WC_EINPUT, NULL, 0, 0, "the certificate "
+                              "would list %ld planes, and verify reads at "
+                              "most %d", (long) T.nplanes,
+                              WC_CERT_MAX_PLANES);
+    if (status != WC_OK)
+    {
+        _wc_settree_clear(&T);
         _wc_plancert_clear(&C);
         return status;
     }
@@ -105,12 +113,13 @@ wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
     _wc_fprint_dyn_problem(out, P);
     fputs(",\n \"goal\": ", out);
     wc_set_fprint_json(out, R->goal);
-    _wc_fprint_planes(out, A);
+    _wc_fprint_planes(out, &T);
     status = put_strings(out, &C, err);
     if (status == WC_OK)
         status = put_pieces(out, &C, err);
     if (status == WC_OK)
-        status = _wc_fprint_cells(out, &C.base, prove_cell, &C, "string", err);
+        status = _wc_fprint_tree(out, &T, "string", err);
+    _wc_settree_clear(&T);
     _wc_plancert_clear(&C);
     return status;
 }

@@ -5,8 +5,8 @@
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   The cells are proved one at a time (analysis/stabcert.h) and written as
-   they are proved, so memory stays that of one cell.  */
+   The tree is grown (analysis/stabcert.h) before anything is written, so
+   a set the proof contradicts writes nothing.  */
 
 #include <config.h>
 
@@ -79,27 +79,33 @@ put_pieces(FILE * out, _wc_stabcert * C, wc_error_t err)
     return status;
 }
 
-static int
-prove_cell(_wc_cell_proof * pf, void * ctx, slong i, wc_error_t err)
-{
-    return _wc_stabcert_cell(pf, (_wc_stabcert *) ctx, i, err);
-}
-
 int
 wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
                                 const wc_stability_t S, wc_error_t err)
 {
-    const wc_cells_struct * A = S->cells;
     _wc_stabcert C;
+    _wc_settree T;
+    fmpz * h;
+    slong nh;
     int status;
 
-    if (A->nplanes > WC_CERT_MAX_PLANES)
-        return wc_error_set(err, WC_EINPUT, NULL, 0, 0, "the certificate "
-                            "would list %ld planes, and verify reads at "
-                            "most %d", (long) A->nplanes,
-                            WC_CERT_MAX_PLANES);
-    if ((status = _wc_stabcert_init(&C, P, S, err)) != WC_OK)
+    _wc_settree_init(&T);
+    status = _wc_stabcert_init(&C, P, S, err);
+    if (status == WC_OK)
     {
+        _wc_stabcert_prefer(&h, &nh, &C);
+        status = _wc_settree_build(&T, h, nh, _wc_stabcert_classify, &C,
+                                   err);
+        _fmpz_vec_clear(h, 3 * nh + 3);
+    }
+    if (status == WC_OK && T.nplanes > WC_CERT_MAX_PLANES)
+        status = wc_error_set(err, WC_EINPUT, NULL, 0, 0, "the certificate "
+                              "would list %ld planes, and verify reads at "
+                              "most %d", (long) T.nplanes,
+                              WC_CERT_MAX_PLANES);
+    if (status != WC_OK)
+    {
+        _wc_settree_clear(&T);
         _wc_stabcert_clear(&C);
         return status;
     }
@@ -108,12 +114,13 @@ wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
     _wc_fprint_dyn_problem(out, P);
     fputs(",\n \"strong\": ", out);
     wc_set_fprint_json(out, S->strong);
-    _wc_fprint_planes(out, A);
+    _wc_fprint_planes(out, &T);
     status = put_faces(out, &C, err);
     if (status == WC_OK)
         status = put_pieces(out, &C, err);
     if (status == WC_OK)
-        status = _wc_fprint_cells(out, &C.base, prove_cell, &C, "face", err);
+        status = _wc_fprint_tree(out, &T, "face", err);
+    _wc_settree_clear(&T);
     _wc_stabcert_clear(&C);
     return status;
 }
