@@ -66,18 +66,59 @@ bug(wc_error_t err, const char * what)
    The pieces.  */
 
 
+/* Does h separate: h . r <= 0 on every ray of W's closure, = 0 on its
+   lines, h . G_i >= 0 on the ng generators G with one > 0?  */
+static int
+separates(const fmpq * h, const wc_cone_struct * W, const fmpq * G, slong ng,
+          fmpq_t d)
+{
+    slong i;
+    int strict = 0;
+
+    if (_wc_qvec_is_zero(h, 3))
+        return 0;
+    for (i = 0; i < fmpz_mat_nrows(W->rays); i++)
+    {
+        _wc_zqvec3_dot(d, WC_ROW(W->rays, i), h);
+        if (fmpq_sgn(d) > 0)
+            return 0;
+    }
+    for (i = 0; i < fmpz_mat_nrows(W->lines); i++)
+    {
+        _wc_zqvec3_dot(d, WC_ROW(W->lines, i), h);
+        if (!fmpq_is_zero(d))
+            return 0;
+    }
+    for (i = 0; i < ng; i++)
+    {
+        _fmpq_vec_dot(d, G + 3 * i, h, 3);
+        if (fmpq_sgn(d) < 0)
+            return 0;
+        strict |= fmpq_sgn(d) > 0;
+    }
+    return strict;
+}
+
 /* Multipliers for moving face y against the generators C->base.F (ng)
-   from a facet or an equality of y's cone (facesys.c) when one puts the
-   generators on its far side: 1 with them, 0 when none serves, -1.  */
+   without an LP (facesys.c), from a plane h with W = y's cone on its side
+   h . g <= 0 and the generators on the other: first W's facets and
+   equalities, then the edges of the cone of all such h -- it is cut by
+   the planes r . h = 0 of W's rays and lines and G_i . h = 0, so each
+   edge is the cross product of two of these.  1 with them, 0 when no h
+   serves (then an LP decides), -1.  */
 static int
 facet_proof(fmpq ** mult, slong * nmult, _wc_stabcert * C, slong y, slong ng,
             wc_error_t err)
 {
     const wc_cone_struct * W = C->S->moving + y;
     slong ni = fmpz_mat_nrows(W->ineqs), ne = fmpz_mat_nrows(W->eqs), r, k;
-    fmpq h[3];
-    int res = 0;
+    slong nr = fmpz_mat_nrows(W->rays), nl = fmpz_mat_nrows(W->lines);
+    slong nc = nr + nl + ng, a, b;
+    fmpq h[3], * c = _fmpq_vec_init(3 * nc + 3);
+    fmpq_t d;
+    int res = 0, sg;
 
+    fmpq_init(d);
     for (k = 0; k < 3; k++)
         fmpq_init(h + k);
     for (r = 0; r < ni + 2 * ne && res == 0; r++)
@@ -95,8 +136,31 @@ facet_proof(fmpq ** mult, slong * nmult, _wc_stabcert * C, slong y, slong ng,
                                   C->S->moving_rot[y], h, C->base.F, ng,
                                   err);
     }
+    for (a = 0; a < nc; a++)
+        if (a < nr + nl)
+            _fmpq_vec_set_fmpz_vec(c + 3 * a, a < nr ? WC_ROW(W->rays, a)
+                                   : WC_ROW(W->lines, a - nr), 3);
+        else
+            _wc_qvec_set(c + 3 * a, C->base.F + 3 * (a - nr - nl), 3);
+    for (a = 0; a < nc && res == 0; a++)
+        for (b = a + 1; b < nc && res == 0; b++)
+        {
+            _wc_qvec3_cross(h, c + 3 * a, c + 3 * b);
+            for (sg = 0; sg < 2 && res == 0; sg++)
+            {
+                for (k = 0; sg == 1 && k < 3; k++)
+                    fmpq_neg(h + k, h + k);
+                if (separates(h, W, C->base.F, ng, d))
+                    res = _wc_face_facet_mult(mult, nmult, &C->m,
+                                              C->S->moving_sign[y],
+                                              C->S->moving_rot[y], h,
+                                              C->base.F, ng, err);
+            }
+        }
     for (k = 0; k < 3; k++)
         fmpq_clear(h + k);
+    fmpq_clear(d);
+    _fmpq_vec_clear(c, 3 * nc + 3);
     return res;
 }
 
