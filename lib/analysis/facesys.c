@@ -344,7 +344,10 @@ _wc_face_solve_cone(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
    -w_j is in W), and on the rows on nudot mu with sum_r mu_r row_r =
    -M h, mu >= 0 off the = rows -- which exists since (M h) . v <= 0 for
    every v of the closed face (Farkas), and is a point of a cone in R^3
-   (exact/lp.h's simplex).  */
+   (exact/lp.h's simplex).  When every h . G_i is 0 (the G_i on the plane,
+   which then touches the face's cone on its open boundary), Motzkin's
+   strict row must be a > row on nudot instead: mu is sought with eps > 0
+   on every > row.  */
 
 /* 1 with y (s->rows) filled and checked; 0 when h does not separate or
    the multipliers fail (the caller then solves the LP); -1 on failure.  */
@@ -355,13 +358,16 @@ facet_mult(fmpq * y, const facesys * s, const _wc_stab_model * m,
     slong nv = 3 + s->e + ng, nmot = s->rows - 3 - s->e - ng, r, k, j, q;
     fmpq * gen = _fmpq_vec_init(3 * 2 * nmot + 3);
     fmpq * lam = _fmpq_vec_init(2 * nmot + 1), * sum = _fmpq_vec_init(nv);
-    fmpq t[3], sep[3];
-    int ok = 1, strict = 0, res;
+    fmpq t[3], sep[3], sgt[3];
+    fmpq_t eps;
+    int ok = 1, strict = 0, res, tries, gt = 0;
 
+    fmpq_init(eps);
     for (k = 0; k < 3; k++)
     {
         fmpq_init(t + k);
         fmpq_init(sep + k);
+        fmpq_init(sgt + k);
         fmpq_set(y + k, h + k);
     }
     /* h . w_j and h . G_i: minus h times their columns in the = rows */
@@ -374,14 +380,19 @@ facet_mult(fmpq * y, const facesys * s, const _wc_stab_model * m,
         strict |= j >= 3 + s->e && fmpq_sgn(t + 0) > 0;
         fmpq_set(y + 3 + nmot + (j - 3), t + 0);
     }
-    ok &= strict;
-    /* -M h as mu on the rows on nudot: each row, and its negative for =  */
+    /* -M h as mu on the rows on nudot: each row, and its negative for =;
+       sgt the sum of the > rows */
     for (r = 0, q = 0; ok && r < nmot; r++)
         for (j = 0; j < (s->rel[3 + r] == WC_REL_EQ ? 2 : 1); j++, q++)
             for (k = 0; k < 3; k++)
                 if (j == 0)
+                {
                     fmpq_set(gen + 3 * q + k,
                              fmpq_mat_entry(s->A, 3 + r, k));
+                    if (s->rel[3 + r] == WC_REL_GT)
+                        fmpq_add(sgt + k, sgt + k, gen + 3 * q + k);
+                    gt |= s->rel[3 + r] == WC_REL_GT;
+                }
                 else
                     fmpq_neg(gen + 3 * q + k,
                              fmpq_mat_entry(s->A, 3 + r, k));
@@ -390,27 +401,47 @@ facet_mult(fmpq * y, const facesys * s, const _wc_stab_model * m,
         fmpq_mul(t + k, m->M + k, h + k);
         fmpq_neg(t + k, t + k);
     }
-    res = ok ? _wc_lp_cone3(lam, sep, gen, q, t, err) : 0;
+    /* with no G_i off the plane, the strict row of Motzkin's theorem must
+       be a > row on nudot: mu = lam + eps on each, for the first eps =
+       1, 1/2, .. with -M h - eps sgt in the cone of the rows */
+    fmpq_one(eps);
+    res = 0;
+    for (tries = 0; ok && res == 0 && tries < (strict ? 1 : gt ? 8 : 0);
+         tries++)
+    {
+        for (k = 0; !strict && k < 3; k++)
+            fmpq_submul(t + k, eps, sgt + k);
+        res = _wc_lp_cone3(lam, sep, gen, q, t, err);
+        for (k = 0; !strict && k < 3; k++)
+            fmpq_addmul(t + k, eps, sgt + k);
+        if (res == 0)
+            fmpq_div_2exp(eps, eps, 1);
+    }
     for (r = 0, q = 0; res == 1 && r < nmot; r++)
     {
         fmpq_set(y + 3 + r, lam + q++);
         if (s->rel[3 + r] == WC_REL_EQ)
             fmpq_sub(y + 3 + r, y + 3 + r, lam + q++);
+        else if (!strict && s->rel[3 + r] == WC_REL_GT)
+            fmpq_add(y + 3 + r, y + 3 + r, eps);
     }
-    /* the check: every sign, and the rows summing to zero */
-    for (r = 0; res == 1 && r < s->rows; r++)
+    /* the check: every sign, one > row positive, the rows summing to 0 */
+    for (r = 0, strict = 0; res == 1 && r < s->rows; r++)
     {
         if (s->rel[r] != WC_REL_EQ && fmpq_sgn(y + r) < 0)
             res = 0;
+        strict |= s->rel[r] == WC_REL_GT && fmpq_sgn(y + r) > 0;
         for (j = 0; j < nv; j++)
             fmpq_addmul(sum + j, y + r, fmpq_mat_entry(s->A, r, j));
     }
-    if (res == 1 && !_wc_qvec_is_zero(sum, nv))
+    if (res == 1 && (!strict || !_wc_qvec_is_zero(sum, nv)))
         res = 0;
+    fmpq_clear(eps);
     for (k = 0; k < 3; k++)
     {
         fmpq_clear(t + k);
         fmpq_clear(sep + k);
+        fmpq_clear(sgt + k);
     }
     _fmpq_vec_clear(gen, 3 * 2 * nmot + 3);
     _fmpq_vec_clear(lam, 2 * nmot + 1);

@@ -41,7 +41,8 @@ int _wc_face_solve_cone(fmpq * nudot, fmpq * c, fmpq ** mult,
 /* The multipliers of the face (y, rot) (force letters y too) for the
    wrenches sum alpha_i G_i, alpha_i > 0, built from a plane h . g = 0
    with the face's cone on the side h . g <= 0 and the G_i on the other
-   (h . G_i >= 0, one > 0), without an LP: 1 with *mult (malloc'd,
+   (h . G_i >= 0, one > 0, or all 0 and a strict row of the face to
+   carry the weight), without an LP: 1 with *mult (malloc'd,
    *nmult entries, checked against the rows); 0 when h does not serve;
    -1 on failure (err set).  */
 int _wc_face_facet_mult(fmpq ** mult, slong * nmult,

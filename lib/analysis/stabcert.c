@@ -67,13 +67,13 @@ bug(wc_error_t err, const char * what)
 
 
 /* Does h separate: h . r <= 0 on every ray of W's closure, = 0 on its
-   lines, h . G_i >= 0 on the ng generators G with one > 0?  */
+   lines, h . G_i >= 0 on the ng generators G?  (facesys.c then needs
+   one > 0, or a strict row of the face.)  */
 static int
 separates(const fmpq * h, const wc_cone_struct * W, const fmpq * G, slong ng,
           fmpq_t d)
 {
     slong i;
-    int strict = 0;
 
     if (_wc_qvec_is_zero(h, 3))
         return 0;
@@ -94,9 +94,8 @@ separates(const fmpq * h, const wc_cone_struct * W, const fmpq * G, slong ng,
         _fmpq_vec_dot(d, G + 3 * i, h, 3);
         if (fmpq_sgn(d) < 0)
             return 0;
-        strict |= fmpq_sgn(d) > 0;
     }
-    return strict;
+    return 1;
 }
 
 /* Multipliers for moving face y against the generators C->base.F (ng)
