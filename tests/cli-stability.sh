@@ -191,4 +191,32 @@ st=$?
 [ $st -eq 4 ] || [ $st -eq 1 ] \
     || fail "the weak cone claimed as the strong set: exit $st: $(cat "$tmp/v")"
 
+# The tree of three-fixels (nothing holds the part: the origin and 26
+# regions off the weak cone).  Its first region cut by a basis plane, which
+# leaves it on one side: exit 4, named; a region that is not empty given
+# null, or a region given two nodes: exit 4.
+"$W" stability --certificate="$tmp/t.json" "$D/three-fixels.wc" > /dev/null
+python3 - "$tmp/t.json" "$tmp" <<'PY' || fail "tree tampering setup"
+import json, sys
+cert = json.load(open(sys.argv[1]))
+tree = cert["tree"]
+b = tree[0]["basis"]
+def put(name, t):
+    c = dict(cert); c["tree"] = t
+    json.dump(c, open(sys.argv[2] + "/" + name, "w"))
+put("nocut.json", [tree[0], {"split": b[0]}, None, None, tree[1]] + tree[2:])
+put("null.json", [tree[0], None] + tree[2:])
+put("extra.json", tree + [tree[-1]])
+put("short.json", tree[:-1])
+PY
+for t in nocut null extra short; do
+    "$W" verify "$tmp/$t.json" > "$tmp/v" 2>&1
+    st=$?
+    [ $st -eq 4 ] || fail "tree $t: exit $st: $(cat "$tmp/v")"
+done
+"$W" verify "$tmp/nocut.json" 2>&1 | grep -q "does not cut the region" \
+    || fail "a cut that misses its region is not named"
+"$W" verify "$tmp/null.json" 2>&1 | grep -q "the tree has null for this region" \
+    || fail "a missing region is not named"
+
 exit $failed

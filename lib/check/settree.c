@@ -13,7 +13,10 @@
    h_p . x < 0, = 0, > 0), or a leaf.  Each region is a relatively open
    cone, computed here from the planes alone, so the leaves partition R^3
    whatever the certificate says; a null for a region that is not empty,
-   or a node for one that is, fails.
+   or a node for one that is, fails, and so does a cut by a plane that
+   leaves the region on one side (so a path cuts by each plane at most
+   once, and a region has at most planes + 3 rays).  The regions cut may
+   have WC_CHECK_TREE_WORK rays in all; a larger tree is refused.
 
    A leaf says where its region R lies, over the extreme rays r_1 .. r_k
    of its closure and their sum s, a point of R:
@@ -328,7 +331,23 @@ visit(wc_check_scratch * X, wc_check_set * K, size_t e,
     if (is_split(&quiet, K, v, &p))
     {
         F = st + *d;
-        ok = _wc_check_region_split(F->ch, R, K->H + 3 * p);
+        K->work += R->n + 1;
+        if (K->work > WC_CHECK_TREE_WORK)
+        {
+            K->too_big = 1;
+            ok = 0;
+        }
+        else
+            ok = _wc_check_region_split(F->ch, R, K->H + 3 * p);
+        if (ok == 1 && (F->ch[0].dim >= 0) + (F->ch[1].dim >= 0)
+            + (F->ch[2].dim >= 0) < 2)
+        {
+            /* so no plane cuts twice on a path: depth <= planes */
+            mark(X->why, e, R);
+            _wc_check_putf(X->why, "plane %lu does not cut the region",
+                           (unsigned long) p + 1);
+            ok = 0;
+        }
         if (ok == 1)
         {
             F->n = 3;
