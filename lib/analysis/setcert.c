@@ -19,6 +19,7 @@
 
 #include "exact/lp.h"
 #include "exact/vec3.h"
+#include "exact/zvec3set.h"
 #include "analysis/stabmodel.h"
 #include "analysis/setcert.h"
 
@@ -281,15 +282,8 @@ listed_plane;
 static int
 plane_cmp(const void * x, const void * y)
 {
-    const fmpz * a = ((const listed_plane *) x)->h;
-    const fmpz * b = ((const listed_plane *) y)->h;
-    slong j;
-    int c;
-
-    for (j = 0; j < 3; j++)
-        if ((c = fmpz_cmp(a + j, b + j)) != 0)
-            return c;
-    return 0;
+    return _wc_zvec3_cmp(((const listed_plane *) x)->h,
+                         ((const listed_plane *) y)->h);
 }
 
 /* Sort T's planes and renumber the nodes.  */

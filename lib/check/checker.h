@@ -82,6 +82,10 @@ void _wc_check_putf(wc_check_text * b, const char * fmt, ...)
 void _wc_check_put_z(wc_check_text * b, const mpz_t z);
 void _wc_check_put_q(wc_check_text * b, const mpq_t q);
 void _wc_check_put_zvec(wc_check_text * b, mpz_t * v, size_t n);
+
+/* Cut b back to at (where a step's message began) when the step held
+   (holds != 0): a failing step keeps its message.  */
+void _wc_check_unmark(wc_check_text * b, size_t at, int holds);
 void _wc_check_put_qvec(wc_check_text * b, mpq_t * v, size_t n);
 
 /* ------------------------------------------------------------------ */

@@ -97,15 +97,6 @@ check_planes(wc_check_text * why, wc_check_set * K)
     return ok;
 }
 
-static void
-unmark(wc_check_text * why, size_t at, int holds)
-{
-    if (holds == 0 || why->s == NULL)
-        return;
-    why->len = at;
-    why->s[at] = '\0';
-}
-
 /* K->F := the generators of face f of Q (f = Q->nfaces: of Q itself):
    its rays, then Q's lines both ways.  Returns their number.  */
 static size_t
@@ -158,7 +149,7 @@ check_moving(wc_check_scratch * X, wc_check_set * K, size_t j,
     _wc_check_put(X->why, closed && !K->plan ? " (closed): " : ": ");
     holds = K->plan ? _wc_check_plan_motion(X, F->sign->text)
         : _wc_check_motion(X);
-    unmark(X->why, at, holds);
+    _wc_check_unmark(X->why, at, holds);
     X->closed = 0;
     X->rotation = 0;
     return holds;
@@ -244,7 +235,7 @@ check_piece(wc_check_scratch * X, wc_check_set * K, size_t k)
         _wc_check_put(X->why, ": ");
         if (holds == 1)
             holds = _wc_check_static(X);
-        unmark(X->why, at, holds);
+        _wc_check_unmark(X->why, at, holds);
     }
     for (f = 0; f < Q->nfaces && holds == 1; f++)
     {
@@ -263,7 +254,7 @@ check_piece(wc_check_scratch * X, wc_check_set * K, size_t k)
             holds = 0;
             break;
         }
-        unmark(X->why, at, 1);
+        _wc_check_unmark(X->why, at, 1);
         X->G = K->F;
         X->ng = face_generators(K, Q, f);
         for (j = 0; j < K->S.nfaces && holds == 1; j++)
@@ -281,7 +272,7 @@ check_piece(wc_check_scratch * X, wc_check_set * K, size_t k)
                 holds = K->plan ? _wc_check_plan_face(X, j, F.sign->text,
                                                       F.mult, F.nmult)
                     : _wc_check_face(X, j, &F);
-            unmark(X->why, at, holds);
+            _wc_check_unmark(X->why, at, holds);
         }
     }
     wc_error_clear(e);

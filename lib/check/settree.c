@@ -151,15 +151,6 @@ mark(wc_check_text * why, size_t entry, const wc_check_region * R)
     return at;
 }
 
-static void
-unmark(wc_check_text * why, size_t at, int holds)
-{
-    if (holds == 0 || why->s == NULL)
-        return;
-    why->len = at;
-    why->s[at] = '\0';
-}
-
 /* s := the sum of R's rays.  */
 static void
 ray_sum(mpz_t * s, const wc_check_region * R)
@@ -261,7 +252,7 @@ check_leaf(wc_check_scratch * X, wc_check_set * K, size_t entry,
         else
             holds = in_face(X->why, Q, L->face, R, s, d);
     }
-    unmark(X->why, at, holds);
+    _wc_check_unmark(X->why, at, holds);
     mpz_clear(d);
     _wc_check_zvec_free(s, 3);
     _wc_check_zvec_free(y, 3);

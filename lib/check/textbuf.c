@@ -152,3 +152,12 @@ _wc_check_put_qvec(wc_check_text * b, mpq_t * v, size_t n)
 {
     put_vec(b, NULL, v, n);
 }
+
+void
+_wc_check_unmark(wc_check_text * b, size_t at, int holds)
+{
+    if (holds == 0 || b->s == NULL)
+        return;
+    b->len = at;
+    b->s[at] = '\0';
+}

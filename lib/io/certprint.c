@@ -13,6 +13,7 @@
 #include "io/printutil.h"
 #include "io/print.h"
 #include "io/certprint.h"
+#include "check/verify.h"
 
 void
 _wc_fprint_scaled(FILE * out, const fmpq * v, slong len)
@@ -115,6 +116,21 @@ _wc_fprint_piece_proof(FILE * out, const _wc_piece_proof * pp, slong nexcl,
         putc(']', out);
     }
     fputs("]}", out);
+}
+
+int
+_wc_cert_tree(_wc_settree * T, fmpz * h, slong nh,
+              _wc_settree_classify classify, void * ctx, wc_error_t err)
+{
+    int status = _wc_settree_build(T, h, nh, classify, ctx, err);
+
+    _fmpz_vec_clear(h, 3 * nh + 3);
+    if (status == WC_OK && T->nplanes > WC_CERT_MAX_PLANES)
+        status = wc_error_set(err, WC_EINPUT, NULL, 0, 0, "the certificate "
+                              "would list %ld planes, and verify reads at "
+                              "most %d", (long) T->nplanes,
+                              WC_CERT_MAX_PLANES);
+    return status;
 }
 
 void

@@ -28,6 +28,12 @@ void _wc_fprint_cone_proof(FILE * out, const _wc_cone_proof * cp, slong n);
 void _wc_fprint_piece_proof(FILE * out, const _wc_piece_proof * pp,
                             slong nexcl, slong n);
 
+/* T := the tree of classify (setcert.h) from the preferred planes h (nh;
+   freed here), refused when it would list more planes than verify
+   reads.  */
+int _wc_cert_tree(_wc_settree * T, fmpz * h, slong nh,
+                  _wc_settree_classify classify, void * ctx, wc_error_t err);
+
 /* ",\n "planes": [..]" of T.  */
 void _wc_fprint_planes(FILE * out, const _wc_settree * T);
 

@@ -17,7 +17,6 @@
 #include "io/printutil.h"
 #include "io/print.h"
 #include "io/certprint.h"
-#include "check/verify.h"
 
 /* The moving faces, each with its cone and the motions that prove the
    cone moves.  */
@@ -94,15 +93,8 @@ wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
     if (status == WC_OK)
     {
         _wc_stabcert_prefer(&h, &nh, &C);
-        status = _wc_settree_build(&T, h, nh, _wc_stabcert_classify, &C,
-                                   err);
-        _fmpz_vec_clear(h, 3 * nh + 3);
+        status = _wc_cert_tree(&T, h, nh, _wc_stabcert_classify, &C, err);
     }
-    if (status == WC_OK && T.nplanes > WC_CERT_MAX_PLANES)
-        status = wc_error_set(err, WC_EINPUT, NULL, 0, 0, "the certificate "
-                              "would list %ld planes, and verify reads at "
-                              "most %d", (long) T.nplanes,
-                              WC_CERT_MAX_PLANES);
     if (status != WC_OK)
     {
         _wc_settree_clear(&T);
