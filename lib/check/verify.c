@@ -18,7 +18,8 @@
    The files: checker.h (what they share), gmpvec.c, textbuf.c,
    motzkin.c, read.c, problem.c; feasible.c (mode feasibility);
    stabread.c, stabcheck.c, faces.c, facecheck.c (strong stability);
-   arrcells.c, setread.c, setdoc.c, setcheck.c (stability sets), plansys.c
+   setread.c, setdoc.c, setcheck.c, settree.c, region.c (stability sets:
+   the claim, the proofs, the tree of cuts and its regions), plansys.c
    (plan goal sets), critcheck.c (critical friction).  */
 
 #include <stdlib.h>
