@@ -30,50 +30,7 @@
 #include <flint/fmpq.h>
 
 #include "wrenchcone.h"
-
-static double
-now(void)
-{
-    struct timespec t;
-
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-static void
-die(const char * what, const wc_error_t err)
-{
-    fprintf(stderr, "bench-cert: %s: %s\n", what,
-            err->message ? err->message : "failed");
-    exit(3);
-}
-
-/* A fixel on the unit circle at ((1 - s^2), -2 s) / (1 + s^2), s = a/b,
-   its normal towards the centre.  */
-static void
-add_cradle_fixel(wc_problem_t P, slong a, slong b)
-{
-    wc_fixel_struct * f = wc_problem_add_fixel(P);
-    fmpq_t s, s2, den;
-
-    fmpq_init(s);
-    fmpq_init(s2);
-    fmpq_init(den);
-    fmpq_set_si(s, a, (ulong) b);
-    fmpq_mul(s2, s, s);
-    fmpq_add_si(den, s2, 1);
-    fmpq_neg(f->point + 0, s2);
-    fmpq_add_si(f->point + 0, f->point + 0, 1);
-    fmpq_div(f->point + 0, f->point + 0, den);
-    fmpq_mul_si(f->point + 1, s, -2);
-    fmpq_div(f->point + 1, f->point + 1, den);
-    fmpq_neg(f->normal + 0, f->point + 0);
-    fmpq_neg(f->normal + 1, f->point + 1);
-    f->state = WC_TOUCHING;
-    fmpq_clear(s);
-    fmpq_clear(s2);
-    fmpq_clear(den);
-}
+#include "benchutil.h"
 
 static void
 make_problem(wc_problem_t P, int cradle, slong n)
@@ -90,7 +47,7 @@ make_problem(wc_problem_t P, int cradle, slong n)
         opt.fixels = n;
         opt.seed = 1;
         if (wc_random_problem(P, &opt, err) != WC_OK)
-            die("wc_random_problem", err);
+            wcbench_die("bench-cert", "wc_random_problem", err);
         wc_error_clear(err);
         wc_random_options_clear(&opt);
         return;
@@ -98,7 +55,7 @@ make_problem(wc_problem_t P, int cradle, slong n)
     fmpq_set_si(P->mu_s, 1, 3);
     fmpq_set_si(P->mu_k, 1, 3);
     for (k = 0; k < n; k++)
-        add_cradle_fixel(P, k + 1, n - k);
+        wcbench_circle_fixel(P, k + 1, n - k, -1, WC_TOUCHING);
 }
 
 /* The three timings of one problem, best of three, and the size.  */
@@ -131,22 +88,22 @@ measure(timing * T, const wc_problem_t P, int plan)
         wc_stability_init(S);
         wc_plan_init(R);
         wc_error_init(err);
-        t0 = now();
+        t0 = wcbench_now();
         if ((plan ? wc_plan(R, P, 0, err) : wc_stability(S, P, err))
             != WC_OK)
-            die(plan ? "wc_plan" : "wc_stability", err);
-        t1 = now();
+            wcbench_die("bench-cert", plan ? "wc_plan" : "wc_stability", err);
+        t1 = wcbench_now();
         f = open_memstream(&text, &len);
         if (f == NULL
             || (plan ? wc_plan_certificate_fprint(f, P, R, err)
                 : wc_stability_certificate_fprint(f, P, S, err)) != WC_OK)
-            die("certificate", err);
+            wcbench_die("bench-cert", "certificate", err);
         fclose(f);
-        t2 = now();
+        t2 = wcbench_now();
         if (wc_verify(&holds, &reason, &summary, text, len, "<cert>", err)
             != WC_OK)
-            die("wc_verify", err);
-        t3 = now();
+            wcbench_die("bench-cert", "wc_verify", err);
+        t3 = wcbench_now();
         T->holds &= holds;
         T->bytes = len;
         if (t1 - t0 < T->compute)

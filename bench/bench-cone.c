@@ -22,15 +22,7 @@
 #include <time.h>
 
 #include "wrenchcone.h"
-
-static double
-now(void)
-{
-    struct timespec t;
-
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
+#include "benchutil.h"
 
 /* Rational points on the unit circle from Pythagorean parametrisation,
    t = k / (k + 3): ((1 - t^2) / (1 + t^2), 2t / (1 + t^2)); the inward
@@ -91,7 +83,7 @@ time_cone(const wc_problem_t P, const char * mode, wc_method method,
 {
     wc_error_t err;
     wc_cone_t W;
-    double t0 = now(), t;
+    double t0 = wcbench_now(), t;
     long reps = 0;
 
     wc_error_init(err);
@@ -104,7 +96,7 @@ time_cone(const wc_problem_t P, const char * mode, wc_method method,
             exit(3);
         }
         reps++;
-        t = now() - t0;
+        t = wcbench_now() - t0;
     }
     while (t < budget);
     *empty = W->empty;

@@ -26,15 +26,7 @@
 #include <time.h>
 
 #include "wrenchcone.h"
-
-static double
-now(void)
-{
-    struct timespec t;
-
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
+#include "benchutil.h"
 
 int
 main(int argc, char ** argv)
@@ -89,20 +81,20 @@ main(int argc, char ** argv)
             wc_cone_init(E, 3);
             wc_cone_init(D, 3);
             wc_fcone_init(F, 3);
-            t0 = now();
+            t0 = wcbench_now();
             st = wc_wrench_cone_paper(E, NULL, P, mode, err);
-            t_exact += now() - t0;
+            t_exact += wcbench_now() - t0;
             if (st != WC_OK)
             {
                 fprintf(stderr, "bench-double: exact route: %s\n", err->message);
                 return 3;
             }
-            t0 = now();
+            t0 = wcbench_now();
             wc_wrench_cone_direct(D, NULL, P, mode, err);
-            t_direct += now() - t0;
-            t0 = now();
+            t_direct += wcbench_now() - t0;
+            t0 = wcbench_now();
             st = wc_wrench_cone_paper_double(F, P, mode, WC_FCONE_EPS, err);
-            t_double += now() - t0;
+            t_double += wcbench_now() - t0;
             total++;
             if (st != WC_OK)
                 failed++;

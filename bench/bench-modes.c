@@ -32,17 +32,9 @@
 #include <flint/fmpq.h>
 
 #include "wrenchcone.h"
+#include "benchutil.h"
 #include "analysis/kinematics.h"
 #include "ref-kin.h"
-
-static double
-now(void)
-{
-    struct timespec t;
-
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
 
 /* Fixel k: t = (k + 1) / (n - k + 1), the circle point
    ((1 - t^2), 2 t) / (1 + t^2), at an angle in (0, pi) increasing with k:
@@ -161,7 +153,7 @@ static double
 time_enumerate(wc_modes_t M, const wc_problem_t P, double budget)
 {
     wc_error_t err;
-    double t0 = now(), t;
+    double t0 = wcbench_now(), t;
     long reps = 0;
 
     wc_error_init(err);
@@ -174,7 +166,7 @@ time_enumerate(wc_modes_t M, const wc_problem_t P, double budget)
             exit(3);
         }
         reps++;
-        t = now() - t0;
+        t = wcbench_now() - t0;
     }
     while (t < budget);
     wc_error_clear(err);
@@ -186,7 +178,7 @@ static double
 time_brute(char *** modes, slong * count, const wc_problem_t P,
            double budget)
 {
-    double t0 = now(), t;
+    double t0 = wcbench_now(), t;
     long reps = 0;
 
     *modes = NULL;
@@ -200,7 +192,7 @@ time_brute(char *** modes, slong * count, const wc_problem_t P,
             exit(3);
         }
         reps++;
-        t = now() - t0;
+        t = wcbench_now() - t0;
     }
     while (t < budget);
     return t / reps;

@@ -37,23 +37,7 @@
 #include <flint/fmpq.h>
 
 #include "wrenchcone.h"
-
-static double
-now(void)
-{
-    struct timespec t;
-
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-static void
-die(const char * what, const wc_error_t err)
-{
-    fprintf(stderr, "bench-plan: %s: %s\n", what,
-            err->message ? err->message : "failed");
-    exit(3);
-}
+#include "benchutil.h"
 
 static void
 disk_problem(wc_problem_t P, slong n)
@@ -110,7 +94,7 @@ literal(const wc_problem_t P, const wc_plan_t R, int * differ,
     fmpz_mat_t H;
     fmpq g[3];
     slong i, j, k, r = 0, rows = 0;
-    double t0 = now(), t1;
+    double t0 = wcbench_now(), t1;
     int * member;
 
     wc_error_init(err);
@@ -119,7 +103,7 @@ literal(const wc_problem_t P, const wc_plan_t R, int * differ,
     wc_cells_init(A);
     if (wc_plan_strings(T, P->n, err) != WC_OK
         || wc_problem_set(Q, P) != WC_OK)
-        die("strings", err);
+        wcbench_die("bench-plan", "strings", err);
     C = malloc(sizeof(wc_cone_struct) * T->nstrings);
     for (i = 0; i < T->nstrings; i++)
     {
@@ -130,7 +114,7 @@ literal(const wc_problem_t P, const wc_plan_t R, int * differ,
                 : x[k] == 'u' ? WC_NEAR : Q->fixels[k].state;
         wc_cone_init(C + i, 3);
         if (wc_wrench_cone_direct(C + i, NULL, Q, x, err) != WC_OK)
-            die("cone", err);
+            wcbench_die("bench-plan", "cone", err);
         rows += fmpz_mat_nrows(C[i].ineqs) + fmpz_mat_nrows(C[i].eqs);
     }
     fmpz_mat_init(H, rows, 3);
@@ -143,7 +127,7 @@ literal(const wc_problem_t P, const wc_plan_t R, int * differ,
                 _fmpz_vec_set(H->rows[r], M[j]->rows[k], 3);
     }
     if (wc_cells_build(A, H, err) != WC_OK)
-        die("cells", err);
+        wcbench_die("bench-plan", "cells", err);
     member = malloc(sizeof(int) * (A->count + 1));
     for (k = 0; k < 3; k++)
         fmpq_init(g + k);
@@ -160,10 +144,10 @@ literal(const wc_problem_t P, const wc_plan_t R, int * differ,
 
         wc_set_init(S);
         if (wc_set_from_cells(S, A, member, err) != WC_OK)
-            die("set", err);
+            wcbench_die("bench-plan", "set", err);
         wc_set_clear(S);
     }
-    t1 = now();
+    t1 = wcbench_now();
     *differ = 0;
     for (j = 0; j < A->count; j++)
     {
@@ -220,13 +204,13 @@ run(const char * family, double limit)
             o.seed = 1;
             o.shape = WC_SHAPE_POLYGON;
             if (wc_random_problem(P, &o, err) != WC_OK)
-                die("random", err);
+                wcbench_die("bench-plan", "random", err);
             wc_random_options_clear(&o);
         }
-        t0 = now();
+        t0 = wcbench_now();
         if (wc_plan(R, P, 0, err) != WC_OK)
-            die("plan", err);
-        tp = now() - t0;
+            wcbench_die("bench-plan", "plan", err);
+        tp = wcbench_now() - t0;
         if (lit_on)
         {
             tl = literal(P, R, &differ, &ncones);
@@ -239,10 +223,10 @@ run(const char * family, double limit)
             wc_plan_t C;
 
             wc_plan_init(C);
-            t0 = now();
+            t0 = wcbench_now();
             if (wc_plan(C, P, 1, err) != WC_OK)
-                die("complete", err);
-            tc = now() - t0;
+                wcbench_die("bench-plan", "complete", err);
+            tc = wcbench_now() - t0;
             comp_on = tc < limit;
             wc_plan_clear(C);
         }

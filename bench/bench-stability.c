@@ -50,23 +50,7 @@
 #include <flint/fmpq.h>
 
 #include "wrenchcone.h"
-
-static double
-now(void)
-{
-    struct timespec t;
-
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-static void
-die(const char * what, const wc_error_t err)
-{
-    fprintf(stderr, "bench-stability: %s: %s\n", what,
-            err->message ? err->message : "failed");
-    exit(3);
-}
+#include "benchutil.h"
 
 enum { FAM_RANDOM = 0, FAM_ONESIDED = 1, FAM_NEAR = 2, NFAM = 3 };
 
@@ -90,34 +74,6 @@ set_wrench(fmpq * g, int w)
         fmpq_set_si(g + k, wrench_q[w][k][0], (ulong) wrench_q[w][k][1]);
 }
 
-/* A fixel at the circle point ((1 - s^2), sy * 2 s) / (1 + s^2), s = a/b,
-   with the inward normal minus the point.  */
-static void
-add_circle_fixel(wc_problem_t P, slong a, slong b, int sy,
-                 wc_fixel_state state)
-{
-    wc_fixel_struct * f = wc_problem_add_fixel(P);
-    fmpq_t s, s2, den;
-
-    fmpq_init(s);
-    fmpq_init(s2);
-    fmpq_init(den);
-    fmpq_set_si(s, a, (ulong) b);
-    fmpq_mul(s2, s, s);
-    fmpq_add_si(den, s2, 1);
-    fmpq_neg(f->point + 0, s2);
-    fmpq_add_si(f->point + 0, f->point + 0, 1);
-    fmpq_div(f->point + 0, f->point + 0, den);
-    fmpq_mul_si(f->point + 1, s, 2 * sy);
-    fmpq_div(f->point + 1, f->point + 1, den);
-    fmpq_neg(f->normal + 0, f->point + 0);
-    fmpq_neg(f->normal + 1, f->point + 1);
-    f->state = state;
-    fmpq_clear(s);
-    fmpq_clear(s2);
-    fmpq_clear(den);
-}
-
 /* P (freshly initialised) := the problem of family fam with n fixels.  */
 static void
 make_problem(wc_problem_t P, int fam, slong n)
@@ -134,7 +90,7 @@ make_problem(wc_problem_t P, int fam, slong n)
         opt.fixels = n;
         opt.seed = 1;
         if (wc_random_problem(P, &opt, err) != WC_OK)
-            die("wc_random_problem", err);
+            wcbench_die("bench-stability", "wc_random_problem", err);
         wc_error_clear(err);
         wc_random_options_clear(&opt);
         return;
@@ -150,9 +106,9 @@ make_problem(wc_problem_t P, int fam, slong n)
     /* s = (k + 1) / (t - k) increases from 1/t to t: the points sweep the
        lower half from near (1, 0) to near (-1, 0).  */
     for (k = 0; k < t; k++)
-        add_circle_fixel(P, k + 1, t - k, -1, WC_TOUCHING);
+        wcbench_circle_fixel(P, k + 1, t - k, -1, WC_TOUCHING);
     for (k = 0; k < m; k++)
-        add_circle_fixel(P, 2 * k + 1, 2 * (m - k), 1, WC_NEAR);
+        wcbench_circle_fixel(P, 2 * k + 1, 2 * (m - k), 1, WC_NEAR);
 }
 
 static slong
@@ -194,7 +150,7 @@ time_classify(classify_cell * c, const wc_problem_t P, int cert,
     wc_classify_t R;
     wc_error_t err;
     fmpq g[3];
-    double * tm = NULL, t0 = now(), t1, sum = 0;
+    double * tm = NULL, t0 = wcbench_now(), t1, sum = 0;
     long alloc = 0, i;
     int w, k, round = 0;
 
@@ -216,10 +172,10 @@ time_classify(classify_cell * c, const wc_problem_t P, int cert,
                 alloc = 2 * alloc + 64;
                 tm = realloc(tm, sizeof(double) * alloc);
             }
-            t1 = now();
+            t1 = wcbench_now();
             if (wc_classify(R, P, g, cert, 1000, err) != WC_OK)
-                die("wc_classify", err);
-            tm[c->calls++] = now() - t1;
+                wcbench_die("bench-stability", "wc_classify", err);
+            tm[c->calls++] = wcbench_now() - t1;
             if (round == 0)
             {
                 c->verdicts[w][0] = R->weak ? 'w' : '.';
@@ -232,7 +188,7 @@ time_classify(classify_cell * c, const wc_problem_t P, int cert,
         }
         round++;
     }
-    while (now() - t0 < budget);
+    while (wcbench_now() - t0 < budget);
     for (i = 0; i < c->calls; i++)
     {
         sum += tm[i];
@@ -274,16 +230,16 @@ static double
 time_stability(wc_stability_t S, const wc_problem_t P, double budget)
 {
     wc_error_t err;
-    double t0 = now(), t;
+    double t0 = wcbench_now(), t;
     long reps = 0;
 
     wc_error_init(err);
     do
     {
         if (wc_stability(S, P, err) != WC_OK)
-            die("wc_stability", err);
+            wcbench_die("bench-stability", "wc_stability", err);
         reps++;
-        t = now() - t0;
+        t = wcbench_now() - t0;
     }
     while (t < budget);
     wc_error_clear(err);
@@ -308,7 +264,7 @@ classify_agrees(const wc_stability_t S, const wc_problem_t P)
     {
         set_wrench(g, w);
         if (wc_classify(R, P, g, 0, 1000, err) != WC_OK)
-            die("wc_classify", err);
+            wcbench_die("bench-stability", "wc_classify", err);
         ok = R->weak == wc_cone_contains(S->weak, g)
             && R->strong == wc_set_contains(S->strong, g)
             && R->strong_paper == wc_set_contains(S->strong_paper, g);
@@ -354,7 +310,7 @@ literal_union(wc_cone_struct ** kept, slong * nkept, const wc_problem_t P)
         strings++;
         if (wc_wrench_cone(W, NULL, P, mode, WC_METHOD_DIRECT, err)
             != WC_OK)
-            die(mode, err);
+            wcbench_die("bench-stability", mode, err);
         if (!W->empty)
         {
             if (*nkept == alloc)
@@ -525,7 +481,7 @@ main(int argc, char ** argv)
         wc_stability_t S;
         wc_cone_struct * kept = NULL;
         slong nkept = 0, strings = 0;
-        double tl, ts, t0 = now();
+        double tl, ts, t0 = wcbench_now();
         long reps = 0;
         const char * check = "-";
 
@@ -537,7 +493,7 @@ main(int argc, char ** argv)
             free_kept(kept, nkept);
             strings = literal_union(&kept, &nkept, P);
             reps++;
-            tl = now() - t0;
+            tl = wcbench_now() - t0;
         }
         while (tl < budget);
         tl /= reps;

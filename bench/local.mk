@@ -2,19 +2,20 @@
 
 EXTRA_PROGRAMS += bench/bench-cone bench/bench-modes bench/bench-double \
 	bench/bench-stability bench/bench-plan bench/bench-cert
-bench_bench_cone_SOURCES = bench/bench-cone.c
+bench_bench_cone_SOURCES = bench/bench-cone.c bench/benchutil.c
 bench_bench_cone_LDADD = $(TEST_LIBS)
-bench_bench_modes_SOURCES = bench/bench-modes.c
+bench_bench_modes_SOURCES = bench/bench-modes.c bench/benchutil.c
 bench_bench_modes_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)/tests
 bench_bench_modes_LDADD = $(TEST_LIBS)
-bench_bench_double_SOURCES = bench/bench-double.c
+bench_bench_double_SOURCES = bench/bench-double.c bench/benchutil.c
 bench_bench_double_LDADD = lib/libwc.la
-bench_bench_stability_SOURCES = bench/bench-stability.c
+bench_bench_stability_SOURCES = bench/bench-stability.c bench/benchutil.c
 bench_bench_stability_LDADD = lib/libwc.la
-bench_bench_plan_SOURCES = bench/bench-plan.c
+bench_bench_plan_SOURCES = bench/bench-plan.c bench/benchutil.c
 bench_bench_plan_LDADD = lib/libwc.la
-bench_bench_cert_SOURCES = bench/bench-cert.c
+bench_bench_cert_SOURCES = bench/bench-cert.c bench/benchutil.c
 bench_bench_cert_LDADD = lib/libwc.la
+noinst_HEADERS += bench/benchutil.h
 BENCH = bench/bench-cone$(EXEEXT) bench/bench-modes$(EXEEXT) \
 	bench/bench-double$(EXEEXT) bench/bench-stability$(EXEEXT) \
 	bench/bench-plan$(EXEEXT) bench/bench-cert$(EXEEXT)
