@@ -29,6 +29,7 @@
 
 #include "model/model.h"
 #include "exact/lp.h"
+#include "exact/vec3.h"
 #include "analysis/facesys.h"
 
 typedef struct
@@ -289,6 +290,54 @@ _wc_face_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
                                0, err);
 }
 
+/* Two motions to try before an LP, for the single wrench g: the body
+   alone (nudot = M^-1 g, no force), or one friction edge alone (g =
+   -lambda w_j, nudot = 0).  1 with z (3 + e + 1) a solution; 0.  */
+static int
+quick_motion(fmpq * z, const facesys * s, const _wc_stab_model * m,
+             const fmpq * g)
+{
+    fmpq w[3], x[3];
+    fmpq_t d;
+    slong j, k, nv = 3 + s->e + 1;
+    int r;
+
+    _wc_qvec_zero(z, nv);
+    for (k = 0; k < 3; k++)
+        fmpq_div(z + k, g + k, m->M + k);
+    fmpq_one(z + nv - 1);
+    if ((r = _wc_lp_rows_hold(s->A, s->rel, z)) == 1)
+        return 1;
+    fmpq_init(d);
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_init(w + k);
+        fmpq_init(x + k);
+    }
+    for (j = 0; j < s->e && r != 1; j++)
+    {
+        _wc_stab_edge_wrench(w, m, s->efix[j], s->edir + 2 * j);
+        _wc_qvec3_cross(x, w, g);
+        _fmpq_vec_dot(d, w, g, 3);
+        if (!_wc_qvec_is_zero(x, 3) || fmpq_sgn(d) >= 0)
+            continue;
+        /* g = -lambda w_j: lambda = -(w . g) / (w . w) */
+        _wc_qvec_zero(z, nv);
+        fmpq_one(z + nv - 1);
+        fmpq_neg(z + 3 + j, d);
+        _fmpq_vec_dot(d, w, w, 3);
+        fmpq_div(z + 3 + j, z + 3 + j, d);
+        r = _wc_lp_rows_hold(s->A, s->rel, z);
+    }
+    fmpq_clear(d);
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_clear(w + k);
+        fmpq_clear(x + k);
+    }
+    return r == 1;
+}
+
 int
 _wc_face_solve_cone(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
                     const _wc_stab_model * m, const char * y,
@@ -314,6 +363,8 @@ _wc_face_solve_cone(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
         fmpq_one(z + 3);
         r = _wc_lp_rows_hold(s.A, s.rel, z);
     }
+    else if (ng == 1 && mult == NULL && quick_motion(z, &s, m, g))
+        r = 1;
     else
     {
         if (mult != NULL)
@@ -358,6 +409,7 @@ facet_mult(fmpq * y, const facesys * s, const _wc_stab_model * m,
     slong nv = 3 + s->e + ng, nmot = s->rows - 3 - s->e - ng, r, k, j, q;
     fmpq * gen = _fmpq_vec_init(3 * 2 * nmot + 3);
     fmpq * lam = _fmpq_vec_init(2 * nmot + 1), * sum = _fmpq_vec_init(nv);
+    char * isgt = flint_calloc(2 * nmot + 1, 1);
     fmpq t[3], sep[3], sgt[3];
     fmpq_t eps;
     int ok = 1, strict = 0, res, tries, gt = 0;
@@ -392,6 +444,7 @@ facet_mult(fmpq * y, const facesys * s, const _wc_stab_model * m,
                     if (s->rel[3 + r] == WC_REL_GT)
                         fmpq_add(sgt + k, sgt + k, gen + 3 * q + k);
                     gt |= s->rel[3 + r] == WC_REL_GT;
+                    isgt[q] = s->rel[3 + r] == WC_REL_GT;
                 }
                 else
                     fmpq_neg(gen + 3 * q + k,
@@ -402,28 +455,37 @@ facet_mult(fmpq * y, const facesys * s, const _wc_stab_model * m,
         fmpq_neg(t + k, t + k);
     }
     /* with no G_i off the plane, the strict row of Motzkin's theorem must
-       be a > row on nudot: mu = lam + eps on each, for the first eps =
-       1, 1/2, .. with -M h - eps sgt in the cone of the rows */
-    fmpq_one(eps);
+       be a > row on nudot: mu = lam + eps on each (then on one at a time),
+       for the first eps = 1, 1/2, .. with -M h - eps (their sum) in the
+       cone of the rows */
     res = 0;
-    for (tries = 0; ok && res == 0 && tries < (strict ? 1 : gt ? 8 : 0);
-         tries++)
+    for (j = strict ? -2 : gt ? -1 : q;
+         ok && res == 0 && j < q && (j == -2 || !strict); j++)
     {
-        for (k = 0; !strict && k < 3; k++)
-            fmpq_submul(t + k, eps, sgt + k);
-        res = _wc_lp_cone3(lam, sep, gen, q, t, err);
-        for (k = 0; !strict && k < 3; k++)
-            fmpq_addmul(t + k, eps, sgt + k);
-        if (res == 0)
-            fmpq_div_2exp(eps, eps, 1);
+        if (j >= 0 && !isgt[j])
+            continue;
+        for (k = 0; j >= 0 && k < 3; k++)
+            fmpq_set(sgt + k, gen + 3 * j + k);
+        fmpq_one(eps);
+        for (tries = 0; res == 0 && tries < (j == -2 ? 1 : 6); tries++)
+        {
+            for (k = 0; j > -2 && k < 3; k++)
+                fmpq_submul(t + k, eps, sgt + k);
+            res = _wc_lp_cone3(lam, sep, gen, q, t, err);
+            for (k = 0; j > -2 && k < 3; k++)
+                fmpq_addmul(t + k, eps, sgt + k);
+            if (res == 0)
+                fmpq_div_2exp(eps, eps, 1);
+        }
+        for (r = 0; res == 1 && j > -2 && r < q; r++)
+            if (j == -1 ? isgt[r] : r == j)
+                fmpq_add(lam + r, lam + r, eps);
     }
     for (r = 0, q = 0; res == 1 && r < nmot; r++)
     {
         fmpq_set(y + 3 + r, lam + q++);
         if (s->rel[3 + r] == WC_REL_EQ)
             fmpq_sub(y + 3 + r, y + 3 + r, lam + q++);
-        else if (!strict && s->rel[3 + r] == WC_REL_GT)
-            fmpq_add(y + 3 + r, y + 3 + r, eps);
     }
     /* the check: every sign, one > row positive, the rows summing to 0 */
     for (r = 0, strict = 0; res == 1 && r < s->rows; r++)
@@ -446,6 +508,7 @@ facet_mult(fmpq * y, const facesys * s, const _wc_stab_model * m,
     _fmpq_vec_clear(gen, 3 * 2 * nmot + 3);
     _fmpq_vec_clear(lam, 2 * nmot + 1);
     _fmpq_vec_clear(sum, nv);
+    flint_free(isgt);
     return res;
 }
 

@@ -135,6 +135,18 @@ facet_proof(fmpq ** mult, slong * nmult, _wc_stabcert * C, slong y, slong ng,
                                   C->S->moving_rot[y], h, C->base.F, ng,
                                   err);
     }
+    /* the sum of W's facet normals: inside the cone of such planes, where
+       the origin's proof needs its plane */
+    for (k = 0; k < 3; k++)
+        fmpq_zero(h + k);
+    for (r = 0; r < ni; r++)
+        for (k = 0; k < 3; k++)
+            fmpz_add(fmpq_numref(h + k), fmpq_numref(h + k),
+                     fmpz_mat_entry(W->ineqs, r, k));
+    if (res == 0 && ni > 1 && separates(h, W, C->base.F, ng, d))
+        res = _wc_face_facet_mult(mult, nmult, &C->m, C->S->moving_sign[y],
+                                  C->S->moving_rot[y], h, C->base.F, ng,
+                                  err);
     for (a = 0; a < nc; a++)
         if (a < nr + nl)
             _fmpq_vec_set_fmpz_vec(c + 3 * a, a < nr ? WC_ROW(W->rays, a)
