@@ -10,6 +10,7 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "cli.h"
@@ -158,6 +159,7 @@ write_file(const _wc_scene_t S, const char * path)
     char * tmp = malloc(len + 16);
     FILE * f = NULL;
     int fd = -1, bad = 1, saved = 0;
+    mode_t mask;
 
     if (tmp == NULL)
     {
@@ -165,7 +167,10 @@ write_file(const _wc_scene_t S, const char * path)
         return WC_EINTERNAL;
     }
     snprintf(tmp, len + 16, "%s.tmp-XXXXXX", path);
-    if ((fd = mkstemp(tmp)) >= 0 && (f = fdopen(fd, "w")) != NULL)
+    mask = umask(0);            /* mkstemp makes 0600; a figure is for */
+    umask(mask);                /* everyone, as a file fopen makes */
+    if ((fd = mkstemp(tmp)) >= 0 && fchmod(fd, 0666 & ~mask) == 0
+        && (f = fdopen(fd, "w")) != NULL)
     {
         bad = _wc_svg_fprint(f, S) != WC_OK;
         saved = errno;
