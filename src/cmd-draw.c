@@ -7,11 +7,8 @@
 
 #include <config.h>
 
-#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "cli.h"
 #include "commands.h"
@@ -34,7 +31,10 @@ const char cmd_draw_usage[] =
     "  --sweep=LIST     G_goal for each friction value of the comma-separated\n"
     "                   LIST (at most 12), one above the other\n"
     "  --graph          the insertion plan's state-transition graph (at most\n"
-    "                   4 fixels)\n"
+    "                   4 fixels): the transitions it forbids and allows\n"
+    "  --graph --wrench=FX,FY,TAU\n"
+    "                   the transitions the wrench admits under the complete\n"
+    "                   plan (plan --complete), with its verdict\n"
     "\n"
     "Options:\n"
     "  -o, --output=FILE  write the figure to FILE (whole or not at all: a\n"
@@ -47,7 +47,7 @@ const char cmd_draw_usage[] =
     "once; the legend and the caption say what is drawn.\n";
 
 enum { OPT_MODE = 256, OPT_MODES, OPT_STABILITY, OPT_PLAN, OPT_SWEEP,
-       OPT_GRAPH, OPT_OUTPUT };
+       OPT_GRAPH, OPT_OUTPUT, OPT_WRENCH };
 
 const struct option cmd_draw_options[] = {
     { "mode", required_argument, NULL, OPT_MODE },
@@ -57,6 +57,7 @@ const struct option cmd_draw_options[] = {
     { "sweep", required_argument, NULL, OPT_SWEEP },
     { "graph", no_argument, NULL, OPT_GRAPH },
     { "output", required_argument, NULL, OPT_OUTPUT },
+    { "wrench", required_argument, NULL, OPT_WRENCH },
     { NULL, 0, NULL, 0 }
 };
 
@@ -69,6 +70,7 @@ typedef struct
     int kinds;              /* how many were given */
     const char * value;     /* --mode's or --sweep's */
     const char * output;
+    const char * wrench;    /* --wrench's FX,FY,TAU */
 }
 draw_options;
 
@@ -108,6 +110,31 @@ parse_sweep(fmpq * mu, slong * k, const char * s, wc_error_t err)
     return status;
 }
 
+/* --wrench's FX,FY,TAU into g[0..3), located as <wrench>:1:COL.  */
+static int
+parse_wrench(fmpq * g, const char * s, wc_error_t err)
+{
+    char * copy = malloc(strlen(s) + 1), * v[3], * p;
+    int k, status;
+
+    if (copy == NULL)
+        return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
+    strcpy(copy, s);
+    v[0] = copy;
+    for (k = 1, p = copy; k < 3 && (p = strchr(p, ',')) != NULL; k++)
+    {
+        *p++ = '\0';
+        v[k] = p;
+    }
+    if (k < 3 || strchr(v[2], ',') != NULL)
+        status = wc_error_set(err, WC_EINPUT, "<wrench>", 1, 1,
+                              "a wrench is three numbers FX,FY,TAU");
+    else
+        status = cli_parse_numbers(g, v, 3, "<wrench>", err);
+    free(copy);
+    return status;
+}
+
 static int
 build(_wc_scene_t S, const draw_options * o, const char * path,
       wc_error_t err)
@@ -123,6 +150,8 @@ build(_wc_scene_t S, const draw_options * o, const char * path,
     status = cli_load_problem(P, path, err);
     if (status == WC_OK && o->kind == OPT_SWEEP)
         status = parse_sweep(mu, &k, o->value, err);
+    if (status == WC_OK && o->wrench != NULL)
+        status = parse_wrench(mu, o->wrench, err);
     if (status == WC_OK)
         switch (o->kind)
         {
@@ -142,7 +171,7 @@ build(_wc_scene_t S, const draw_options * o, const char * path,
             status = _wc_draw_sweep(S, P, mu, k, err);
             break;
         default:
-            status = _wc_draw_graph(S, P, err);
+            status = _wc_draw_graph(S, P, o->wrench != NULL ? mu : NULL, err);
         }
     wc_problem_clear(P);
     for (i = 0; i < DRAW_MAX_SWEEP; i++)
@@ -150,100 +179,10 @@ build(_wc_scene_t S, const draw_options * o, const char * path,
     return status;
 }
 
-/* Write S to path through a temporary file in the same directory,
-   renamed at the end; nothing is left behind on failure.  */
 static int
-write_file(const _wc_scene_t S, const char * path)
+put_svg(FILE * f, const void * S)
 {
-    size_t len = strlen(path);
-    char * tmp = malloc(len + 16);
-    FILE * f = NULL;
-    int fd = -1, bad = 1, saved = 0;
-    mode_t mask;
-
-    if (tmp == NULL)
-    {
-        fputs(PROG ": out of memory\n", stderr);
-        return WC_EINTERNAL;
-    }
-    snprintf(tmp, len + 16, "%s.tmp-XXXXXX", path);
-    mask = umask(0);            /* mkstemp makes 0600; a figure is for */
-    umask(mask);                /* everyone, as a file fopen makes */
-    if ((fd = mkstemp(tmp)) >= 0 && fchmod(fd, 0666 & ~mask) == 0
-        && (f = fdopen(fd, "w")) != NULL)
-    {
-        bad = _wc_svg_fprint(f, S) != WC_OK;
-        saved = errno;
-        bad |= fclose(f) != 0;
-        if (!bad && rename(tmp, path) != 0)
-            bad = 1;
-        saved = errno;
-        if (bad)
-            remove(tmp);
-    }
-    else
-    {
-        saved = errno;
-        if (fd >= 0)
-        {
-            close(fd);
-            remove(tmp);
-        }
-    }
-    free(tmp);
-    if (bad)
-    {
-        fprintf(stderr, PROG ": %s: cannot write the figure: %s\n", path,
-                strerror(saved ? saved : EIO));
-        return WC_EINTERNAL;
-    }
-    return WC_OK;
-}
-
-/* argv with -o FILE and -oFILE as --output=FILE (malloc'd vector and
-   strings in *owned), so that getopt_long sees the long option.  */
-static char **
-expand_short(int argc, char ** argv, char *** owned, int * nowned)
-{
-    char ** v = malloc(sizeof(char *) * (argc + 1));
-    int i, j = 0;
-
-    *nowned = 0;
-    *owned = malloc(sizeof(char *) * (argc + 1));
-    if (v == NULL || *owned == NULL)
-    {
-        free(v);
-        return NULL;
-    }
-    for (i = 0; i < argc; i++)
-    {
-        const char * file = NULL;
-
-        if (strcmp(argv[i], "--") == 0)
-        {
-            while (i < argc)
-                v[j++] = argv[i++];
-            break;
-        }
-        if (strcmp(argv[i], "-o") == 0 && i + 1 < argc)
-            file = argv[++i];
-        else if (strncmp(argv[i], "-o", 2) == 0 && argv[i][2] != '\0')
-            file = argv[i] + 2;
-        if (file == NULL)
-            v[j++] = argv[i];
-        else
-        {
-            char * s = malloc(strlen(file) + 10);
-
-            if (s == NULL)
-                break;
-            sprintf(s, "--output=%s", file);
-            (*owned)[(*nowned)++] = s;
-            v[j++] = s;
-        }
-    }
-    v[j] = NULL;
-    return i >= argc ? v : (free(v), NULL);
+    return _wc_svg_fprint(f, S, 1);
 }
 
 /* -1 to go on, or the exit status.  */
@@ -257,6 +196,8 @@ parse(draw_options * o, const cli_command * self, int argc, char ** argv)
     while ((c = cli_option(&p, argc, argv)) >= 0)
         if (c == OPT_OUTPUT)
             o->output = optarg;
+        else if (c == OPT_WRENCH)
+            o->wrench = optarg;
         else
         {
             o->kind = c;
@@ -273,6 +214,9 @@ parse(draw_options * o, const cli_command * self, int argc, char ** argv)
     if (o->kinds > 1)
         return cli_usage_error("draw", "draw takes one figure at a time%s",
                                "");
+    if (o->wrench != NULL && o->kind != OPT_GRAPH)
+        return cli_usage_error("draw", "--wrench goes with --graph only%s",
+                               "");
     if (argc - optind != 1)
         return cli_usage_error("draw", argc - optind < 1
                                ? "draw needs PROBLEM%s"
@@ -283,7 +227,7 @@ parse(draw_options * o, const cli_command * self, int argc, char ** argv)
 static int
 run(const cli_command * self, int argc, char ** argv)
 {
-    draw_options o = { 0, 0, NULL, NULL };
+    draw_options o = { 0, 0, NULL, NULL, NULL };
     _wc_scene_t S;
     wc_error_t err;
     int status;
@@ -296,10 +240,10 @@ run(const cli_command * self, int argc, char ** argv)
     if (status != WC_OK)
         cli_report(err, status);
     else if (o.output != NULL)
-        status = write_file(S, o.output);
+        status = cli_write_whole(o.output, "figure", put_svg, S);
     else
     {
-        _wc_svg_fprint(stdout, S);
+        _wc_svg_fprint(stdout, S, 1);
         status = cli_finish_output();
     }
     _wc_scene_clear(S);
@@ -310,23 +254,5 @@ run(const cli_command * self, int argc, char ** argv)
 int
 cmd_draw(const cli_command * self, int argc, char ** argv)
 {
-    char ** v, ** owned = NULL;
-    int status, nowned = 0, i;
-
-    if ((v = expand_short(argc, argv, &owned, &nowned)) == NULL)
-    {
-        for (i = 0; owned != NULL && i < nowned; i++)
-            free(owned[i]);
-        free(owned);
-        fputs(PROG ": out of memory\n", stderr);
-        return WC_EINTERNAL;
-    }
-    for (i = 0; v[i] != NULL; i++)
-        ;
-    status = run(self, i, v);
-    for (i = 0; i < nowned; i++)
-        free(owned[i]);
-    free(owned);
-    free(v);
-    return status;
+    return cli_run_with_output(run, self, argc, argv);
 }

@@ -42,6 +42,9 @@ static const char usage[] =
     "  random [OPTIONS]       print a reproducible random problem (a .wc file)\n"
     "  draw FIGURE PROBLEM    a figure as SVG: --mode=M, --modes, --stability,\n"
     "                         --plan, --sweep=LIST or --graph; -o FILE\n"
+    "  report PROBLEM -o FILE.html\n"
+    "                         every analysis of PROBLEM on one HTML page, with\n"
+    "                         its figures\n"
     "\n"
     "PROBLEM is a .wc problem file (see wrenchcone(5)); '-' reads standard input.\n"
     "Options of every command: --format=text|json, -h/--help, -V/--version,\n"
@@ -66,6 +69,7 @@ const cli_command cli_commands[] = {
     COMMAND(plan, CLI_SHARED | CLI_OPERANDS_LAST),
     COMMAND(sweep, CLI_SHARED),
     COMMAND(draw, 0),
+    COMMAND(report, 0),
     { NULL, NULL, NULL, NULL, 0 }
 };
 

@@ -74,6 +74,17 @@ pixels --mode=na data/section4.wc 0.1,1,0,0,dark 0.5,0.5,0,0,light
 pixels --modes data/section4.wc 0,-0.5,0,0,dark 0.5,0.5,0,0,light
 # The goal state 111 sits at (2/5, 3): its box's top edge, and left of it.
 pixels --graph data/three-fixels-insert.wc 0.4,3,0,-12,dark 0.4,3,-80,0,light
+# The wrench (-1, -1, 0) seats the Figure 6 disk: 00 -> 11 is admitted,
+# a vertical edge from (0, 0) to (0, 2) (aa), and 10 -> 00 is not.
+"$W" draw --graph --wrench=-1,-1,0 data/disk-two-fixels-insert.wc -o "$tmp/w.svg" \
+    && rsvg-convert "$tmp/w.svg" -o "$tmp/w.png" \
+    && python3 tests/png-pixels.py "$tmp/w.png" "$tmp/w.svg" 0,1,0,0,dark \
+        -0.4,0.5,0,0,light || fail "pixels of draw --graph --wrench"
+"$W" draw --graph --wrench=-1,-1,0 data/disk-two-fixels-insert.wc \
+    | grep -q 'Verdict: accepted' || fail "draw --graph --wrench: no verdict"
+"$W" draw --graph --wrench=1,1,0 data/disk-two-fixels-insert.wc \
+    | grep -q 'Verdict: rejected: the goal state can lose a contact' \
+    || fail "draw --graph --wrench=1,1,0: no rejection"
 
 # Bad input and usage: status, message, nothing on stdout, no file.
 bad() {
@@ -94,6 +105,9 @@ bad 2 "draw takes one figure" --modes --plan data/section4.wc -o "$tmp/never.svg
 bad 1 "<sweep>:1:3: a friction coefficient must not be negative" --sweep=1,-1 data/section4.wc -o "$tmp/never.svg"
 "$W" random --fixels=5 > "$tmp/five.wc" || fail "random"
 bad 1 "the state-transition graph" --graph "$tmp/five.wc" -o "$tmp/never.svg"
+bad 2 "--wrench goes with --graph only" --modes --wrench=1,1,1 data/section4.wc -o "$tmp/never.svg"
+bad 1 "<wrench>:1:1: a wrench is three numbers" --graph --wrench=1,1 data/section4.wc -o "$tmp/never.svg"
+bad 1 "<wrench>:1:3: " --graph --wrench=1,x,1 data/section4.wc -o "$tmp/never.svg"
 bad 3 "cannot write the figure" --modes data/section4.wc -o "$tmp/no/such/dir/never.svg"
 bad 1 "data/none.wc" --modes data/none.wc -o "$tmp/never.svg"
 # An existing file is replaced only when the figure is whole.

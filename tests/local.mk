@@ -56,7 +56,8 @@ SH_TESTS = \
 	tests/layers.sh \
 	tests/install.sh \
 	tests/readme-examples.sh \
-	tests/cli-draw.sh
+	tests/cli-draw.sh \
+	tests/cli-report.sh
 TESTS += $(C_TESTS) $(SH_TESTS)
 TEST_EXTENSIONS = .sh
 SH_LOG_COMPILER = $(SHELL)

@@ -4,10 +4,13 @@
 Usage: png-pixels.py FIGURE.png FIGURE.svg CHECK...
 where each CHECK is X,Y,DX,DY,dark or X,Y,DX,DY,light: the point (X, Y)
 of the part's plane, mapped to pixels by the figure's own transform (the
-data-x0, data-y0 and data-scale of its <g id="plane">), then moved by
+data-x0, data-y0 and data-scale of its <g class="plane">), then moved by
 (DX, DY) pixels.  dark: some pixel within one pixel of it is dark
 (luminance below 90 of 255); light: none is.  Standard library only: the
-PNG is decoded here (8-bit RGB or RGBA, not interlaced)."""
+PNG is decoded here (8-bit RGB or RGBA, not interlaced).
+
+png-pixels.py --nonblank N IMAGE.png: at least N dark pixels (a
+screenshot that shows something)."""
 import re, struct, sys, zlib
 
 def read_png(path):
@@ -48,9 +51,16 @@ def lum(rows, bpp, x, y):
     # over white
     return sum((0.299, 0.587, 0.114)[k] * (p[k] * alpha + 255 * (1 - alpha)) for k in range(3))
 
+if sys.argv[1] == '--nonblank':
+    w, h, bpp, rows = read_png(sys.argv[3])
+    dark = sum(1 for y in range(0, h, 3) for x in range(0, w, 3) if lum(rows, bpp, x, y) < 90)
+    if dark < int(sys.argv[2]):
+        print('%s: %d dark pixels, want at least %s' % (sys.argv[3], dark, sys.argv[2]))
+        sys.exit(1)
+    sys.exit(0)
 w, h, bpp, rows = read_png(sys.argv[1])
 svg = open(sys.argv[2]).read()
-m = re.search(r'<g id="plane" data-x0="([-0-9.]+)" data-y0="([-0-9.]+)" data-scale="([-0-9.]+)"', svg)
+m = re.search(r'<g class="plane" data-x0="([-0-9.]+)" data-y0="([-0-9.]+)" data-scale="([-0-9.]+)"', svg)
 x0, y0, s = map(float, m.groups())
 bad = 0
 for check in sys.argv[3:]:

@@ -258,7 +258,7 @@ check_svg(const wc_problem_t P)
     _wc_scene_init(S);
     if (_wc_draw_stability(S, P, err) != WC_OK || (f = tmpfile()) == NULL)
         wctest_fail_problem(P, NULL, "no figure");
-    if (_wc_svg_fprint(f, S) != WC_OK || (len = ftell(f)) < 8
+    if (_wc_svg_fprint(f, S, 1) != WC_OK || (len = ftell(f)) < 8
         || (buf = calloc(len + 1, 1)) == NULL || fseek(f, 0, SEEK_SET) != 0
         || fread(buf, 1, len, f) != len || fclose(f) != 0)
         wctest_fail_problem(P, NULL, "the SVG writer fails");

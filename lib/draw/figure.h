@@ -42,7 +42,9 @@ int _wc_draw_region(_wc_scene_t S, const wc_problem_t P, const wc_push_t R,
    centre (or translation) per feasible mode.  stability: the pushing
    regions of the stability sets.  plan: those of G_goal.  sweep: those
    of G_goal at each of the k friction values mu[0..k).  graph: the
-   contact states of the insertion plan and its transitions.  */
+   contact states of the insertion plan and the transitions it forbids
+   and allows; with a wrench g (not NULL), those g admits under the
+   complete plan.  */
 int _wc_draw_mode(_wc_scene_t S, const wc_problem_t P, const char * mode,
                   wc_error_t err);
 int _wc_draw_modes(_wc_scene_t S, const wc_problem_t P, wc_error_t err);
@@ -50,7 +52,8 @@ int _wc_draw_stability(_wc_scene_t S, const wc_problem_t P, wc_error_t err);
 int _wc_draw_plan(_wc_scene_t S, const wc_problem_t P, wc_error_t err);
 int _wc_draw_sweep(_wc_scene_t S, const wc_problem_t P, const fmpq * mu,
                    slong k, wc_error_t err);
-int _wc_draw_graph(_wc_scene_t S, const wc_problem_t P, wc_error_t err);
+int _wc_draw_graph(_wc_scene_t S, const wc_problem_t P, const fmpq * g,
+                   wc_error_t err);
 
 /* The problem's name for captions ("the problem in FILE" without one).  */
 const char * _wc_draw_name(const wc_problem_t P);

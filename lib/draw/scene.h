@@ -165,11 +165,12 @@ void _wc_scene_bbox(double * box, const _wc_scene_t S);
    px = t[0] + t[2] x, py = t[1] - t[2] y.  */
 void _wc_svg_transform(double * t, const _wc_scene_t S);
 
-/* Write S as one standalone SVG document to out (the caller owns the
-   stream).  Positions are printed with 3 decimals, so that the same
-   scene gives the same bytes.  Returns WC_OK or WC_EINTERNAL on a write
-   error.  */
-int _wc_svg_fprint(FILE * out, const _wc_scene_t S);
+/* Write S as an SVG document to out (the caller owns the stream):
+   standalone, with its XML declaration; else an <svg> element to be
+   put inline in HTML.  Positions are printed with 3 decimals, so that
+   the same scene gives the same bytes.  Returns WC_OK or WC_EINTERNAL
+   on a write error.  */
+int _wc_svg_fprint(FILE * out, const _wc_scene_t S, int standalone);
 
 #ifdef __cplusplus
 }

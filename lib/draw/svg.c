@@ -243,14 +243,17 @@ put_prim(FILE * out, const _wc_prim_struct * p, const double * t)
         put_line(out, p, t, st);
     else if (p->kind == _WC_PRIM_ARC || p->kind == _WC_PRIM_CIRCLE)
         put_arc(out, p, t, st, p->tag == _WC_TAG_TORQUE_IN
-                || p->tag == _WC_TAG_TORQUE_OUT);
+                || p->tag == _WC_TAG_TORQUE_OUT
+                || p->tag == _WC_TAG_EDGE_FORBIDDEN
+                || p->tag == _WC_TAG_EDGE_ADMITTED);
     else if (p->kind == _WC_PRIM_DOT)
         put_dot(out, p, t, st);
     else
     {
         fprintf(out, "<text class=\"label\" x=\"%.3f\" y=\"%.3f\" "
                 "font-family=\"sans-serif\" font-size=\"12\" "
-                "text-anchor=\"%s\">", t[0] + t[2] * p->x + p->dx,
+                "stroke=\"#ffffff\" stroke-width=\"3\" "
+                "paint-order=\"stroke\" text-anchor=\"%s\">", t[0] + t[2] * p->x + p->dx,
                 t[1] - t[2] * p->y + p->dy, p->anchor < 0 ? "start"
                 : p->anchor > 0 ? "end" : "middle");
         put_text(out, p->text);
@@ -339,7 +342,7 @@ caption_lines(FILE * out, const char * s, double y)
 }
 
 int
-_wc_svg_fprint(FILE * out, const _wc_scene_t S)
+_wc_svg_fprint(FILE * out, const _wc_scene_t S, int standalone)
 {
     double t[3], box[4], plane_bottom, legend_top, caption_top, height;
     slong i, columns = 2;
@@ -355,8 +358,9 @@ _wc_svg_fprint(FILE * out, const _wc_scene_t S)
                   * LEGEND_ROW + 14;
     height = caption_top + caption_lines(NULL, S->caption, 0) * CAPTION_ROW
              + 10;
-    fprintf(out, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" "
+    if (standalone)
+        fputs("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n", out);
+    fprintf(out, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" "
             "height=\"%.0f\" viewBox=\"0 0 %.0f %.0f\">\n", WIDTH,
             ceil(height), WIDTH, ceil(height));
     fputs("<title>", out);
@@ -369,11 +373,11 @@ _wc_svg_fprint(FILE * out, const _wc_scene_t S)
             "font-size=\"15\" font-weight=\"bold\">", MARGIN);
     put_text(out, S->title != NULL ? S->title : "");
     /* The map from the plane to pixels, for readers of the file.  */
-    fprintf(out, "</text>\n<g id=\"plane\" data-x0=\"%.6f\" data-y0=\"%.6f\" "
+    fprintf(out, "</text>\n<g class=\"plane\" data-x0=\"%.6f\" data-y0=\"%.6f\" "
             "data-scale=\"%.6f\">\n", t[0], t[1], t[2]);
     for (i = 0; i < S->count; i++)
         put_prim(out, S->prims + i, t);
-    fputs("</g>\n<g id=\"legend\">\n", out);
+    fputs("</g>\n<g class=\"legend\">\n", out);
     for (i = 0; i < S->nlegend; i++)
     {
         double x = MARGIN + (i % columns) * (PLANE_W / 2);
@@ -385,7 +389,7 @@ _wc_svg_fprint(FILE * out, const _wc_scene_t S)
         put_text(out, S->legend[i].text);
         fputs("</text>\n", out);
     }
-    fputs("</g>\n<g id=\"caption\">\n", out);
+    fputs("</g>\n<g class=\"caption\">\n", out);
     caption_lines(out, S->caption, caption_top);
     fputs("</g>\n</svg>\n", out);
     return ferror(out) ? WC_EINTERNAL : WC_OK;
