@@ -50,6 +50,7 @@ done
 if [ -n "$browser" ]; then
     "$W" report data/three-fixels-insert.wc -o "$tmp/page.html" || fail "report"
     HOME=$tmp timeout 120 $browser --headless --no-sandbox --disable-gpu \
+        --disable-dev-shm-usage \
         --screenshot="$tmp/shot.png" --window-size=1000,2000 \
         "file://$tmp/page.html" >"$tmp/log" 2>&1
     [ -s "$tmp/shot.png" ] || fail "$browser took no screenshot: $(tail -n 3 "$tmp/log")"
