@@ -9,16 +9,20 @@
    polygon (degenerate layouts included): the ends of every drawn pushing
    region equal the doubles of the exact interval ends (within 1e-6 of
    the figure's scale), one dot per end, filled exactly for the closed
-   ones; every drawn line of force passes through the point where its
+   ones (the stability sets, G_goal, the first set of a sweep); every
+   drawn line of force passes through the point where its
    generator's moment vanishes and points along the force, one per
    generator (a pure torque: an arc about o); every rotation centre lies
-   where its witness twist puts it; and the SVG is a whole document.  */
+   where its witness twist puts it, labelled with the mode; a wrench's
+   graph has one edge per transition it admits; and the SVG is a whole
+   document.  */
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "analysis/kinematics.h"
+#include "analysis/plan.h"
 #include "analysis/stability.h"
 #include "analysis/wrench.h"
 #include "core/random.h"
@@ -87,38 +91,30 @@ exact_ends(double * xy, int * closed, const wc_problem_t P,
     return m;
 }
 
-/* Layer 0 of the stability figure is the strongly stable set (exact
-   semantics): its ends, dot for dot.  */
-static void
-check_regions(const wc_problem_t P, const char * what)
+/* The ends drawn on layer 0 of S are those of R, dot for dot; returns
+   the number of dots on layer 1 (for the next set's count).  */
+static slong
+check_layer(const wc_problem_t P, const _wc_scene_t S, const wc_push_t R,
+            const char * what)
 {
-    _wc_scene_t S;
-    wc_stability_t T;
-    wc_error_t err;
-    double * xy;
-    int * closed, * used;
-    slong m, i, j, dots = 0;
+    double * xy = malloc(sizeof(double) * (4 * R->count + 2));
+    int * closed = malloc(sizeof(int) * (2 * R->count + 1));
+    int * used = calloc(2 * R->count + 1, sizeof(int));
+    slong m, i, j, dots = 0, next = 0;
 
-    wc_error_init(err);
-    wc_stability_init(T);
-    _wc_scene_init(S);
-    if (wc_stability(T, P, err) != WC_OK)
-        wctest_fail_problem(P, NULL, "%s: stability fails", what);
-    if (_wc_draw_stability(S, P, err) != WC_OK)
-        wctest_fail_problem(P, NULL, "%s: the stability figure fails", what);
-    if (!T->has_push)
-        wctest_fail_problem(P, NULL, "%s: no pushing regions", what);
-    xy = malloc(sizeof(double) * (4 * T->push_strong->count + 2));
-    closed = malloc(sizeof(int) * (2 * T->push_strong->count + 1));
-    used = calloc(2 * T->push_strong->count + 1, sizeof(int));
-    m = exact_ends(xy, closed, P, T->push_strong);
+    m = exact_ends(xy, closed, P, R);
     for (i = 0; i < S->count; i++)
     {
         const _wc_prim_struct * p = S->prims + i;
 
-        if (p->kind != _WC_PRIM_DOT || p->layer != 0
+        if (p->kind != _WC_PRIM_DOT
             || (p->tag != _WC_TAG_END_OPEN && p->tag != _WC_TAG_END_CLOSED))
             continue;
+        if (p->layer != 0)
+        {
+            next += p->layer == 1;
+            continue;
+        }
         dots++;
         for (j = 0; j < m; j++)
             if (!used[j] && dist(p->x, p->y, xy[2 * j], xy[2 * j + 1])
@@ -136,8 +132,107 @@ check_regions(const wc_problem_t P, const char * what)
     free(xy);
     free(closed);
     free(used);
+    return next;
+}
+
+/* The stability figure: layer 0 is the strongly stable set (exact
+   semantics), layer 1 eq. 19's.  */
+static void
+check_regions(const wc_problem_t P, const char * what)
+{
+    _wc_scene_t S;
+    wc_stability_t T;
+    wc_error_t err;
+    slong next;
+
+    wc_error_init(err);
+    wc_stability_init(T);
+    _wc_scene_init(S);
+    if (wc_stability(T, P, err) != WC_OK)
+        wctest_fail_problem(P, NULL, "%s: stability fails", what);
+    if (_wc_draw_stability(S, P, err) != WC_OK)
+        wctest_fail_problem(P, NULL, "%s: the stability figure fails", what);
+    if (!T->has_push)
+        wctest_fail_problem(P, NULL, "%s: no pushing regions", what);
+    next = check_layer(P, S, T->push_strong, what);
+    {
+        double * e = malloc(sizeof(double) * (4 * T->push_strong_paper->count + 2));
+        int * c = malloc(sizeof(int) * (2 * T->push_strong_paper->count + 1));
+
+        if (next != exact_ends(e, c, P, T->push_strong_paper))
+            wctest_fail_problem(P, NULL, "%s: eq. 19's ends miscounted", what);
+        free(e);
+        free(c);
+    }
     _wc_scene_clear(S);
     wc_stability_clear(T);
+    wc_error_clear(err);
+}
+
+/* The plan figure's region is G_goal's; the sweep's first layer is the
+   plan's at its first friction value.  */
+static void
+check_plan(const wc_problem_t P, const char * what)
+{
+    _wc_scene_t S;
+    wc_plan_t R;
+    wc_error_t err;
+    fmpq mu[2];
+
+    wc_error_init(err);
+    wc_plan_init(R);
+    _wc_scene_init(S);
+    if (wc_plan(R, P, 0, err) != WC_OK || _wc_draw_plan(S, P, err) != WC_OK)
+        wctest_fail_problem(P, NULL, "%s: the plan figure fails", what);
+    if (R->has_push)
+        check_layer(P, S, R->push_goal, what);
+    _wc_scene_clear(S);
+    wc_plan_clear(R);
+    fmpq_init(mu + 0);
+    fmpq_init(mu + 1);
+    fmpq_set_si(mu + 0, 1, 10);
+    fmpq_set_si(mu + 1, 1, 2);
+    wc_plan_init(R);
+    _wc_scene_init(S);
+    if (wc_plan_with_friction(R, P, mu + 0, err) != WC_OK
+        || _wc_draw_sweep(S, P, mu, 2, err) != WC_OK)
+        wctest_fail_problem(P, NULL, "%s: the sweep figure fails", what);
+    if (R->has_push)
+        check_layer(P, S, R->push_goal, what);
+    _wc_scene_clear(S);
+    wc_plan_clear(R);
+    fmpq_clear(mu + 0);
+    fmpq_clear(mu + 1);
+    wc_error_clear(err);
+}
+
+/* The graph of a wrench: one admitted edge (or loop) per transition.  */
+static void
+check_graph(const wc_problem_t P, const fmpq * g)
+{
+    _wc_scene_t S;
+    wc_plan_wrench_t W;
+    wc_error_t err;
+    slong i, edges = 0, nodes = 0;
+
+    wc_error_init(err);
+    wc_plan_wrench_init(W);
+    _wc_scene_init(S);
+    if (wc_plan_wrench(W, P, g, 1, err) != WC_OK
+        || _wc_draw_graph(S, P, g, err) != WC_OK)
+        wctest_fail_problem(P, NULL, "the graph figure fails");
+    for (i = 0; i < S->count; i++)
+    {
+        edges += S->prims[i].tag == _WC_TAG_EDGE_ADMITTED;
+        nodes += S->prims[i].tag == _WC_TAG_NODE
+                 || S->prims[i].tag == _WC_TAG_GOAL;
+    }
+    if (edges != W->nedges || nodes != (1 << P->n))
+        wctest_fail_problem(P, NULL, "the graph has %ld edges and %ld "
+                            "states, not %ld and %d", (long) edges,
+                            (long) nodes, (long) W->nedges, 1 << (int) P->n);
+    _wc_scene_clear(S);
+    wc_plan_wrench_clear(W);
     wc_error_clear(err);
 }
 
@@ -208,13 +303,16 @@ check_mode(const wc_problem_t P, const char * mode)
     wc_error_clear(err);
 }
 
+/* Every mode with w != 0 has a centre drawn where its witness puts it,
+   and its name on that centre's label; every centre drawn is some
+   mode's.  */
 static void
 check_modes(const wc_problem_t P)
 {
     _wc_scene_t S;
     wc_modes_t M;
     wc_error_t err;
-    slong i, k = 0;
+    slong i, k;
     double ox = fmpq_get_d(P->com + 0), oy = fmpq_get_d(P->com + 1);
 
     wc_error_init(err);
@@ -223,21 +321,43 @@ check_modes(const wc_problem_t P)
     if (wc_modes_enumerate(M, P, err) != WC_OK
         || _wc_draw_modes(S, P, err) != WC_OK)
         wctest_fail_problem(P, NULL, "the modes figure fails");
+    for (k = 0; k < S->count; k++)
+    {
+        const _wc_prim_struct * p = S->prims + k;
+        int found = 0;
+
+        if (p->tag != _WC_TAG_CENTRE)
+            continue;
+        for (i = 0; i < M->count && !found; i++)
+        {
+            const fmpz * nu = M->witness->rows[i];
+            double vx = fmpz_get_d(nu + 0), vy = fmpz_get_d(nu + 1);
+            double w = fmpz_get_d(nu + 2), cx = ox - vy / w, cy = oy + vx / w;
+
+            found = w != 0 && dist(p->x, p->y, cx, cy)
+                    <= 1e-9 * (S->scale + hypot(cx - ox, cy - oy));
+        }
+        if (!found)
+            wctest_fail_problem(P, NULL, "a centre at (%g, %g) is no mode's",
+                                p->x, p->y);
+    }
     for (i = 0; i < M->count; i++)
     {
         const fmpz * nu = M->witness->rows[i];
         double vx = fmpz_get_d(nu + 0), vy = fmpz_get_d(nu + 1);
         double w = fmpz_get_d(nu + 2), cx = ox - vy / w, cy = oy + vx / w;
+        int found = 0;
 
-        if (w == 0)
-            continue;
-        for (; k < S->count && S->prims[k].tag != _WC_TAG_CENTRE; k++)
-            ;
-        if (k == S->count || dist(S->prims[k].x, S->prims[k].y, cx, cy)
-            > 1e-9 * (S->scale + hypot(cx - ox, cy - oy)))
-            wctest_fail_problem(P, NULL, "mode %s: centre not at (%g, %g)",
+        for (k = 0; k + 1 < S->count && !found && w != 0; k++)
+            found = S->prims[k].tag == _WC_TAG_CENTRE
+                    && dist(S->prims[k].x, S->prims[k].y, cx, cy)
+                       <= 1e-9 * (S->scale + hypot(cx - ox, cy - oy))
+                    && S->prims[k + 1].text != NULL
+                    && strstr(S->prims[k + 1].text, M->modes[i]) != NULL;
+        if (w != 0 && !found)
+            wctest_fail_problem(P, NULL, "mode %s: no centre labelled with "
+                                "it at (%g, %g)",
                                 M->modes[i], cx, cy);
-        k++;
     }
     _wc_scene_clear(S);
     wc_modes_clear(M);
@@ -315,6 +435,7 @@ main(void)
         load(P, files[i]);
         if (P->shape != WC_SHAPE_NONE)
             check_regions(P, files[i]);
+        check_plan(P, files[i]);
         check_modes(P);
         check_svg(P);
         wc_problem_clear(P);
@@ -327,6 +448,24 @@ main(void)
         check_mode(P, "na");
         check_mode(P, "ss");
         check_mode(P, "nu");
+        wc_problem_clear(P);
+    }
+    {
+        wc_problem_t P;
+        fmpq g[3];
+
+        wc_problem_init(P);
+        load(P, "disk-two-fixels-insert.wc");
+        for (i = 0; i < 3; i++)
+            fmpq_init(g + i);
+        fmpq_set_si(g + 0, -1, 1);
+        fmpq_set_si(g + 1, -1, 1);
+        check_graph(P, g);          /* accepted: five transitions */
+        fmpq_set_si(g + 0, 1, 1);
+        fmpq_set_si(g + 1, 1, 1);
+        check_graph(P, g);          /* rejected */
+        for (i = 0; i < 3; i++)
+            fmpq_clear(g + i);
         wc_problem_clear(P);
     }
     iters = wctest_iters(40);
@@ -348,6 +487,8 @@ main(void)
         if (wc_random_problem(P, &opt, err) != WC_OK)
             wctest_fail("wc_random_problem fails");
         check_regions(P, "random");
+        if (i % 4 == 0)
+            check_plan(P, "random");
         check_modes(P);
         wctest_random_mode(mode, P);
         check_mode(P, mode);

@@ -15,6 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <flint/fmpq_vec.h>
+
 #include "analysis/kinematics.h"
 #include "analysis/wrench.h"
 #include "model/mode.h"
@@ -199,72 +201,110 @@ twist_centre(fmpq * c, const wc_problem_t P, const fmpz * nu)
     fmpq_clear(t);
 }
 
-static int
-mode_mark(_wc_scene_t S, const wc_problem_t P, const wc_modes_t M, slong i,
-          int * ntrans, char * rest, size_t rest_len)
+/* The modes' marks: a centre per distinct rotation centre (exact), its
+   label naming every mode turning there; translations as arrows from o;
+   the modes at rest listed in rest.  */
+typedef struct
 {
-    const fmpz * nu = M->witness->rows[i];
+    slong n;            /* centres so far */
+    fmpq * c;           /* 2 per centre */
+    slong * text;       /* the index of each centre's label in S */
+    int ntrans;
+    char rest[256];
+}
+marks;
+
+static int
+translation(_wc_scene_t S, const wc_problem_t P, const fmpz * nu,
+            const char * mode, marks * m)
+{
+    double ox = fmpq_get_d(P->com + 0), oy = fmpq_get_d(P->com + 1);
+    double vx = fmpz_get_d(nu + 0), vy = fmpz_get_d(nu + 1);
+    double vl = sqrt(vx * vx + vy * vy);
+    double L = (0.25 + 0.04 * m->ntrans) * S->scale;
+    int status;
+
+    if (fmpz_is_zero(nu + 0) && fmpz_is_zero(nu + 1))
+    {
+        size_t used = strlen(m->rest);
+
+        snprintf(m->rest + used, sizeof(m->rest) - used, "%s%s",
+                 used ? ", " : "", mode);
+        return WC_OK;
+    }
+    m->ntrans++;
+    status = _wc_scene_arrow(S, _WC_TAG_TRANSLATION, ox, oy,
+                             ox + L * vx / vl, oy + L * vy / vl);
+    if (status == WC_OK)
+        status = _wc_scene_text(S, ox + L * vx / vl, oy + L * vy / vl,
+                                12 * vx / vl, -12 * vy / vl + 4, 0, mode);
+    return status;
+}
+
+/* Append ", label" to the text of primitive k.  */
+static int
+append_label(_wc_scene_t S, slong k, const char * label)
+{
+    size_t len = strlen(S->prims[k].text);
+    char * t = realloc(S->prims[k].text, len + strlen(label) + 3);
+
+    if (t == NULL)
+        return WC_EINTERNAL;
+    sprintf(t + len, ", %s", label);
+    S->prims[k].text = t;
+    return WC_OK;
+}
+
+static int
+mode_mark(_wc_scene_t S, const wc_problem_t P, const fmpz * nu,
+          const char * mode, marks * m)
+{
     char label[128];
-    fmpq c[2];
+    fmpq * c;
+    slong j;
     int status;
 
     if (fmpz_is_zero(nu + 2))
-    {
-        double ox = fmpq_get_d(P->com + 0), oy = fmpq_get_d(P->com + 1);
-        double vx = fmpz_get_d(nu + 0), vy = fmpz_get_d(nu + 1);
-        double vl = sqrt(vx * vx + vy * vy), L = (0.25 + 0.04 * *ntrans)
-                                                 * S->scale;
-
-        if (vl == 0)
-        {
-            size_t used = strlen(rest);
-
-            snprintf(rest + used, rest_len - used, "%s%s", used ? ", " : "",
-                     M->modes[i]);
-            return WC_OK;
-        }
-        ++*ntrans;
-        status = _wc_scene_arrow(S, _WC_TAG_TRANSLATION, ox, oy,
-                                 ox + L * vx / vl, oy + L * vy / vl);
-        if (status == WC_OK)
-            status = _wc_scene_text(S, ox + L * vx / vl, oy + L * vy / vl,
-                                    12 * vx / vl, -12 * vy / vl + 4, 0,
-                                    M->modes[i]);
-        return status;
-    }
-    fmpq_init(c + 0);
-    fmpq_init(c + 1);
+        return translation(S, P, nu, mode, m);
+    snprintf(label, sizeof(label), "%.100s %s", mode,
+             fmpz_sgn(nu + 2) > 0 ? "(ccw)" : "(cw)");
+    c = m->c + 2 * m->n;
     twist_centre(c, P, nu);
+    for (j = 0; j < m->n; j++)
+        if (fmpq_equal(m->c + 2 * j, c) && fmpq_equal(m->c + 2 * j + 1, c + 1))
+            return append_label(S, m->text[j], label);
     status = _wc_scene_dot(S, _WC_TAG_CENTRE, 0, fmpq_get_d(c + 0),
                            fmpq_get_d(c + 1));
-    snprintf(label, sizeof(label), "%.100s %s", M->modes[i],
-             fmpz_sgn(nu + 2) > 0 ? "(ccw)" : "(cw)");
     if (status == WC_OK)
         status = _wc_scene_text(S, fmpq_get_d(c + 0), fmpq_get_d(c + 1), 9,
-                                -8 - 13 * (i % 3), -1, label);
-    fmpq_clear(c + 0);
-    fmpq_clear(c + 1);
+                                -8 - 13 * (m->n % 2), -1, label);
+    m->text[m->n++] = S->count - 1;
     return status;
 }
 
 int
 _wc_draw_modes(_wc_scene_t S, const wc_problem_t P, wc_error_t err)
 {
-    char rest[256] = "";
+    marks m;
     wc_modes_t M;
     slong i;
-    int status, ntrans = 0;
+    int status;
 
+    memset(&m, 0, sizeof(m));
     wc_modes_init(M);
     status = wc_modes_enumerate(M, P, err);
     if (status == WC_OK)
         status = _wc_draw_part(S, P);
+    if (status == WC_OK
+        && ((m.c = _fmpq_vec_init(2 * M->count + 2)) == NULL
+            || (m.text = malloc(sizeof(slong) * (M->count + 1))) == NULL))
+        status = WC_EINTERNAL;
     for (i = 0; i < M->count && status == WC_OK; i++)
-        status = mode_mark(S, P, M, i, &ntrans, rest, sizeof(rest));
+        status = mode_mark(S, P, M->witness->rows[i], M->modes[i], &m);
     if (status == WC_OK)
         status = _wc_scene_legend(S, _WC_TAG_CENTRE, 0, "rotation centre "
                                   "of a mode (a witness twist)");
-    if (status == WC_OK && ntrans > 0)
+    if (status == WC_OK && m.ntrans > 0)
         status = _wc_scene_legend(S, _WC_TAG_TRANSLATION, 0,
                                   "translation of a mode");
     if (status == WC_OK)
@@ -275,9 +315,12 @@ _wc_draw_modes(_wc_scene_t S, const wc_problem_t P, wc_error_t err)
                                    "one of its twists (ccw: counter-"
                                    "clockwise), or as the direction of a "
                                    "translation.%s%s%s", _wc_draw_name(P),
-                                   (long) M->count, rest[0]
-                                   ? " At rest (zero twist): " : "", rest,
-                                   rest[0] ? "." : "");
+                                   (long) M->count, m.rest[0]
+                                   ? " At rest (zero twist): " : "", m.rest,
+                                   m.rest[0] ? "." : "");
+    if (m.c != NULL)
+        _fmpq_vec_clear(m.c, 2 * M->count + 2);
+    free(m.text);
     wc_modes_clear(M);
     return status;
 }
