@@ -168,7 +168,7 @@ _wc_draw_mode(_wc_scene_t S, const wc_problem_t P, const char * mode,
                  mode, strlen(mode) > 200 ? "..." : mode);
         status = _wc_scene_title(S, title);
     }
-    if (status == WC_OK && (mu = _wc_draw_fmpq_str(P->mu_s)) == NULL)
+    if (status == WC_OK && (mu = _wc_draw_friction(P)) == NULL)
         status = WC_EINTERNAL;
     if (status == WC_OK)
         status = _wc_scene_caption(S, "%s, contact mode %s, friction %s. %s",
@@ -277,7 +277,9 @@ mode_mark(_wc_scene_t S, const wc_problem_t P, const fmpz * nu,
                            fmpq_get_d(c + 1));
     if (status == WC_OK)
         status = _wc_scene_text(S, fmpq_get_d(c + 0), fmpq_get_d(c + 1), 9,
-                                -8 - 13 * (m->n % 2), -1, label);
+                                -8, -1, label);
+    if (status == WC_OK)
+        S->prims[S->count - 1].closed = 1;      /* may move */
     m->text[m->n++] = S->count - 1;
     return status;
 }

@@ -27,27 +27,6 @@ ends_legend(_wc_scene_t S)
     return status;
 }
 
-/* The friction of P for captions: "1/5", or "1/2 static, 2/5 kinetic".  */
-static char *
-friction_words(const wc_problem_t P)
-{
-    char * s = _wc_draw_fmpq_str(P->mu_s), * k, * w;
-
-    if (s == NULL || fmpq_equal(P->mu_s, P->mu_k))
-        return s;
-    if ((k = _wc_draw_fmpq_str(P->mu_k)) == NULL
-        || (w = malloc(strlen(s) + strlen(k) + 32)) == NULL)
-    {
-        free(s);
-        free(k);
-        return NULL;
-    }
-    sprintf(w, "%s static, %s kinetic", s, k);
-    free(s);
-    free(k);
-    return w;
-}
-
 int
 _wc_draw_stability(_wc_scene_t S, const wc_problem_t P, wc_error_t err)
 {
@@ -80,7 +59,7 @@ _wc_draw_stability(_wc_scene_t S, const wc_problem_t P, wc_error_t err)
     if (status == WC_OK)
         status = _wc_scene_title(S, "Stability: where a frictionless finger "
                                  "may push");
-    if (status == WC_OK && (mu = friction_words(P)) == NULL)
+    if (status == WC_OK && (mu = _wc_draw_friction(P)) == NULL)
         status = WC_EINTERNAL;
     if (status == WC_OK)
         status = _wc_scene_caption(S, "%s, friction %s. Thick strokes on the "
@@ -119,7 +98,7 @@ _wc_draw_plan(_wc_scene_t S, const wc_problem_t P, wc_error_t err)
     }
     if (status == WC_OK)
         status = _wc_scene_title(S, "Insertion plan: the goal set G_goal");
-    if (status == WC_OK && (mu = friction_words(P)) == NULL)
+    if (status == WC_OK && (mu = _wc_draw_friction(P)) == NULL)
         status = WC_EINTERNAL;
     if (status == WC_OK)
         status = _wc_scene_caption(S, "%s, friction %s. G_goal (eq. 21) is "

@@ -55,8 +55,12 @@ int _wc_draw_sweep(_wc_scene_t S, const wc_problem_t P, const fmpq * mu,
 int _wc_draw_graph(_wc_scene_t S, const wc_problem_t P, const fmpq * g,
                    wc_error_t err);
 
-/* The problem's name for captions ("the problem in FILE" without one).  */
+/* The problem's name for captions (its file's without one).  */
 const char * _wc_draw_name(const wc_problem_t P);
+
+/* P's friction for captions, malloc'd: "1/5", or "1/2 static, 2/5
+   kinetic"; NULL when out of memory.  */
+char * _wc_draw_friction(const wc_problem_t P);
 
 #ifdef __cplusplus
 }

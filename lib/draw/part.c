@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "draw/figure.h"
 
@@ -27,6 +28,26 @@ grow(double * box, double x, double y)
         box[1] = y;
     if (y > box[3])
         box[3] = y;
+}
+
+char *
+_wc_draw_friction(const wc_problem_t P)
+{
+    char * s = _wc_draw_fmpq_str(P->mu_s), * k, * w;
+
+    if (s == NULL || fmpq_equal(P->mu_s, P->mu_k))
+        return s;
+    if ((k = _wc_draw_fmpq_str(P->mu_k)) == NULL
+        || (w = malloc(strlen(s) + strlen(k) + 32)) == NULL)
+    {
+        free(s);
+        free(k);
+        return NULL;
+    }
+    sprintf(w, "%s static, %s kinetic", s, k);
+    free(s);
+    free(k);
+    return w;
 }
 
 /* The bounding box of the shape, the fixels and the centre of mass.  */

@@ -80,7 +80,9 @@ typedef struct
     _wc_draw_kind kind;
     _wc_draw_tag tag;
     int layer;              /* regions: the set (0, 1, ...) */
-    int closed;             /* lines: closed; arrows: head at both ends */
+    int closed;             /* lines: closed; arcs: clockwise (the
+                               head at a0); text: the writer may move it
+                               off other labels and markers */
     slong npts;
     double * pts;           /* x0 y0 x1 y1 ... */
     double x, y, r, a0, a1;

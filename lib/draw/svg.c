@@ -10,6 +10,7 @@
    by dash pattern and width as well as by grey.  */
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "draw/scene.h"
@@ -261,6 +262,87 @@ put_prim(FILE * out, const _wc_prim_struct * p, const double * t)
     }
 }
 
+/* Labels that may move (text primitives with closed set): the first of
+   a few places round their point where they overlap no label placed
+   before them and no marker, by an estimate of the text's box.  */
+typedef struct
+{
+    double x0, y0, x1, y1;
+}
+box;
+
+static void
+text_box(box * b, double x, double y, int anchor, const char * s)
+{
+    double w = 7.0 * (double) strlen(s);
+
+    b->x0 = anchor < 0 ? x : anchor > 0 ? x - w : x - w / 2;
+    b->x1 = b->x0 + w;
+    b->y0 = y - 11;
+    b->y1 = y + 3;
+}
+
+static int
+overlaps(const box * a, const box * boxes, slong n)
+{
+    slong i;
+
+    for (i = 0; i < n; i++)
+        if (a->x0 < boxes[i].x1 && boxes[i].x0 < a->x1
+            && a->y0 < boxes[i].y1 && boxes[i].y0 < a->y1)
+            return 1;
+    return 0;
+}
+
+/* Write the plane's primitives, moving the movable labels.  */
+static void
+put_plane(FILE * out, const _wc_scene_t S, const double * t)
+{
+    static const double place[8][3] = {
+        { 9, -8, -1 }, { 9, 18, -1 }, { -9, -8, 1 }, { -9, 18, 1 },
+        { 0, -14, 0 }, { 0, 26, 0 }, { 9, -22, -1 }, { 9, 32, -1 } };
+    box * boxes = malloc(sizeof(box) * (S->count + 1));
+    slong i, n = 0;
+    int k;
+
+    for (i = 0; boxes != NULL && i < S->count; i++)
+        if (S->prims[i].kind == _WC_PRIM_DOT)
+        {
+            double x = t[0] + t[2] * S->prims[i].x;
+            double y = t[1] - t[2] * S->prims[i].y;
+            box b = { x - 6, y - 6, x + 6, y + 6 };
+
+            boxes[n++] = b;
+        }
+    for (i = 0; i < S->count; i++)
+    {
+        _wc_prim_struct p = S->prims[i];
+        double x = t[0] + t[2] * p.x, y = t[1] - t[2] * p.y;
+        box b;
+
+        if (p.kind == _WC_PRIM_TEXT && boxes != NULL)
+        {
+            for (k = 0; p.closed && k < 8; k++)
+            {
+                text_box(&b, x + place[k][0], y + place[k][1],
+                         (int) place[k][2], p.text);
+                if (!overlaps(&b, boxes, n))
+                    break;
+            }
+            if (p.closed)
+            {
+                k = k == 8 ? 0 : k;
+                p.dx = place[k][0];
+                p.dy = place[k][1];
+                p.anchor = (int) place[k][2];
+            }
+            text_box(&boxes[n++], x + p.dx, y + p.dy, p.anchor, p.text);
+        }
+        put_prim(out, &p, t);
+    }
+    free(boxes);
+}
+
 /* A legend entry's sample at (x, y), 36 pixels wide.  */
 static void
 sample(FILE * out, const _wc_legend_struct * l, double x, double y)
@@ -375,8 +457,7 @@ _wc_svg_fprint(FILE * out, const _wc_scene_t S, int standalone)
     /* The map from the plane to pixels, for readers of the file.  */
     fprintf(out, "</text>\n<g class=\"plane\" data-x0=\"%.6f\" data-y0=\"%.6f\" "
             "data-scale=\"%.6f\">\n", t[0], t[1], t[2]);
-    for (i = 0; i < S->count; i++)
-        put_prim(out, S->prims + i, t);
+    put_plane(out, S, t);
     fputs("</g>\n<g class=\"legend\">\n", out);
     for (i = 0; i < S->nlegend; i++)
     {
