@@ -39,7 +39,7 @@ const char cmd_draw_usage[] =
     "Options:\n"
     "  -o, --output=FILE  write the figure to FILE (whole or not at all: a\n"
     "                   temporary file beside it is renamed at the end);\n"
-    "                   default standard output\n"
+    "                   default (and -o -) standard output\n"
     "  -h, --help       print this help and exit\n"
     "  -V, --version    print versions and exit\n"
     "\n"
@@ -239,7 +239,7 @@ run(const cli_command * self, int argc, char ** argv)
     status = build(S, &o, argv[optind], err);
     if (status != WC_OK)
         cli_report(err, status);
-    else if (o.output != NULL)
+    else if (o.output != NULL && strcmp(o.output, "-") != 0)
         status = cli_write_whole(o.output, "figure", put_svg, S);
     else
     {

@@ -32,7 +32,7 @@ const char cmd_report_usage[] =
     "\n"
     "Options:\n"
     "  -o, --output=FILE  write the page to FILE (whole or not at all);\n"
-    "                   default standard output\n"
+    "                   default (and -o -) standard output\n"
     "  -h, --help       print this help and exit\n"
     "  -V, --version    print versions and exit\n";
 
@@ -426,7 +426,7 @@ run(const cli_command * self, int argc, char ** argv)
     }
     if (status != WC_OK)
         cli_report(err, status);
-    else if (output != NULL)
+    else if (output != NULL && strcmp(output, "-") != 0)
     {
         bytes b = { buf, len };
 

@@ -116,11 +116,13 @@ echo old > "$tmp/keep.svg"
 [ "$(cat "$tmp/keep.svg")" = old ] || fail "a failed draw changed its output file"
 "$W" draw --modes data/section4.wc -o "$tmp/keep.svg" && xmllint --noout "$tmp/keep.svg" \
     || fail "draw did not replace its output file"
-# -o FILE, -oFILE, --output=FILE and stdout give the same bytes.
+# -o FILE, -oFILE, --output=FILE, -o - and stdout give the same bytes.
 "$W" draw --modes data/section4.wc > "$tmp/a.svg" \
     && "$W" draw --modes data/section4.wc -o"$tmp/b.svg" \
     && "$W" draw --modes --output="$tmp/c.svg" data/section4.wc \
+    && "$W" draw --modes -o - data/section4.wc > "$tmp/d.svg" \
     && cmp -s "$tmp/a.svg" "$tmp/b.svg" && cmp -s "$tmp/a.svg" "$tmp/c.svg" \
+    && cmp -s "$tmp/a.svg" "$tmp/d.svg" \
     && cmp -s "$tmp/a.svg" "$tmp/keep.svg" || fail "-o and stdout differ"
 
 [ $fails -eq 0 ] || { echo "$fails failure(s)" >&2; exit 1; }
