@@ -190,7 +190,7 @@ static int
 graph_words(_wc_scene_t S, const wc_problem_t P, const fmpq * g,
             const char * verdict)
 {
-    char * w[3] = { NULL, NULL, NULL };
+    char * w[4] = { NULL, NULL, NULL, NULL };
     int status = WC_OK, i;
 
     if (g == NULL)
@@ -209,16 +209,19 @@ graph_words(_wc_scene_t S, const wc_problem_t P, const fmpq * g,
     for (i = 0; i < 3 && status == WC_OK; i++)
         if ((w[i] = _wc_draw_fmpq_str(g + i)) == NULL)
             status = WC_EINTERNAL;
+    if (status == WC_OK && (w[3] = _wc_draw_friction(P)) == NULL)
+        status = WC_EINTERNAL;
     if (status == WC_OK)
-        status = _wc_scene_caption(S, "%s, %ld fixels, the wrench g = (%s, "
-                                   "%s, %s): every transition it admits "
+        status = _wc_scene_caption(S, "%s, %ld fixels, friction %s, the "
+                                   "wrench g = (%s, %s, %s): every "
+                                   "transition it admits "
                                    "under the complete plan, labelled with "
                                    "an outcome string (s: the contact may "
                                    "break, m: kept, a: being approached) "
                                    "whose cone holds g. Verdict: %s.",
-                                   _wc_draw_name(P), (long) P->n, w[0], w[1],
-                                   w[2], verdict);
-    for (i = 0; i < 3; i++)
+                                   _wc_draw_name(P), (long) P->n, w[3], w[0],
+                                   w[1], w[2], verdict);
+    for (i = 0; i < 4; i++)
         free(w[i]);
     return status;
 }
