@@ -105,6 +105,26 @@ int cli_write_certificate(const char * path,
                           int (*put)(FILE *, const void *),
                           const void * data);
 
+/* --- cli-output.c: whole output files, -o FILE --- */
+
+/* Write path with put(f, data) through a temporary file in the same
+   directory, renamed at the end: path is replaced whole or not at all,
+   and nothing is left behind on failure.  A failure is reported here
+   ("cannot write the WHAT") with exit status WC_EINTERNAL.  */
+int cli_write_whole(const char * path, const char * what,
+                    int (*put)(FILE *, const void *), const void * data);
+
+/* argv (argc entries) with -o FILE and -oFILE as --output=FILE: a
+   malloc'd, NULL-terminated vector; the new strings are in *owned
+   (malloc'd, *nowned of them).  NULL when out of memory.  */
+char ** cli_expand_output(int argc, char ** argv, char *** owned,
+                          int * nowned);
+
+/* run(self, argc', argv') on argv with -o expanded; out of memory is
+   reported (exit status 3).  */
+int cli_run_with_output(int (*run)(const cli_command *, int, char **),
+                        const cli_command * self, int argc, char ** argv);
+
 /* --- cli-options.c: options and operands --- */
 
 #define CLI_MAX_OPTIONS 64

@@ -50,4 +50,12 @@ int cmd_sweep(const cli_command * self, int argc, char ** argv);
 extern const char cmd_sweep_usage[];
 extern const struct option cmd_sweep_options[];
 
+int cmd_draw(const cli_command * self, int argc, char ** argv);
+extern const char cmd_draw_usage[];
+extern const struct option cmd_draw_options[];
+
+int cmd_report(const cli_command * self, int argc, char ** argv);
+extern const char cmd_report_usage[];
+extern const struct option cmd_report_options[];
+
 #endif

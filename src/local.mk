@@ -6,10 +6,11 @@
 bin_PROGRAMS = src/wrenchcone
 src_wrenchcone_SOURCES = src/wrenchcone.c src/commands.h \
 	src/cli.c src/cli-base.c src/cli-options.c src/cli-memory.c \
-	src/cli-progress.c src/cli.h src/cli-base.h \
+	src/cli-progress.c src/cli-output.c src/cli.h src/cli-base.h \
 	src/cmd-cone.c src/cmd-modes.c src/cmd-feasible.c src/cmd-verify.c \
 	src/cmd-random.c src/cmd-compare.c src/cmd-classify.c \
-	src/cmd-stability.c src/cmd-plan.c src/cmd-sweep.c
+	src/cmd-stability.c src/cmd-plan.c src/cmd-sweep.c \
+	src/cmd-draw.c src/cmd-report.c
 src_wrenchcone_LDADD = lib/libwc.la
 
 # The standalone certificate checker: the check library and GMP, nothing

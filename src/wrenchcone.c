@@ -40,6 +40,11 @@ static const char usage[] =
     "                         check a cone computed elsewhere (FILE: cdd or JSON,\n"
     "                         floats allowed) against the exact W(MODE)\n"
     "  random [OPTIONS]       print a reproducible random problem (a .wc file)\n"
+    "  draw FIGURE PROBLEM    a figure as SVG: --mode=M, --modes, --stability,\n"
+    "                         --plan, --sweep=LIST or --graph; -o FILE\n"
+    "  report PROBLEM -o FILE.html\n"
+    "                         every analysis of PROBLEM on one HTML page, with\n"
+    "                         its figures\n"
     "\n"
     "PROBLEM is a .wc problem file (see wrenchcone(5)); '-' reads standard input.\n"
     "Options of every command: --format=text|json, -h/--help, -V/--version,\n"
@@ -63,7 +68,8 @@ const cli_command cli_commands[] = {
     COMMAND(stability, CLI_SHARED | CLI_OPERANDS_LAST),
     COMMAND(plan, CLI_SHARED | CLI_OPERANDS_LAST),
     COMMAND(sweep, CLI_SHARED),
-    { "draw", NULL, NULL, NULL, 0 },     /* planned */
+    COMMAND(draw, 0),
+    COMMAND(report, 0),
     { NULL, NULL, NULL, NULL, 0 }
 };
 

@@ -26,6 +26,7 @@ problems=$(awk '
         if (l == "analysis") return 3
         if (l == "float") return 4
         if (l == "io") return 5
+        if (l == "draw") return 6
         return 99
     }
     FNR == 1 {

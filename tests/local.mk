@@ -32,7 +32,8 @@ C_TESTS = \
 	tests/t-stability \
 	tests/t-refplan \
 	tests/t-plan \
-	tests/t-plansound
+	tests/t-plansound \
+	tests/t-draw
 check_PROGRAMS += $(C_TESTS) tests/corpus-check
 LDADD = $(TEST_LIBS)
 tests_corpus_check_LDADD = lib/libwc.la
@@ -54,7 +55,9 @@ SH_TESTS = \
 	tests/cdd-interop.sh \
 	tests/layers.sh \
 	tests/install.sh \
-	tests/readme-examples.sh
+	tests/readme-examples.sh \
+	tests/cli-draw.sh \
+	tests/cli-report.sh
 TESTS += $(C_TESTS) $(SH_TESTS)
 TEST_EXTENSIONS = .sh
 SH_LOG_COMPILER = $(SHELL)
@@ -67,7 +70,8 @@ AM_TESTS_ENVIRONMENT = \
 	export WRENCHCONE top_srcdir top_builddir CC WC_SAN MAKE LSAN_OPTIONS;
 
 EXTRA_DIST += $(SH_TESTS) tests/bad tests/golden tests/certs tests/lsan.supp \
-	tests/update-golden.py tests/install tests/cert-tamper.py
+	tests/update-golden.py tests/install tests/cert-tamper.py \
+	tests/png-pixels.py
 
 # The C tests' names, for running them alone (.ci/run widens them).
 print-c-tests:

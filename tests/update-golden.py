@@ -16,6 +16,15 @@ golden = {
     'section4-na-paper-trace.txt': 'cone --method=paper --trace data/section4.wc na',
     'figure5-ln.json': 'cone --format=json data/disk-two-fixels.wc ln',
 }
+# tests/cli-draw.sh: the paper's figures.
+golden.update({
+    'draw-na.svg': 'draw --mode=na data/section4.wc',
+    'draw-modes.svg': 'draw --modes data/disk-two-fixels.wc',
+    'draw-strong.svg': 'draw --stability data/disk-two-fixels.wc',
+    'draw-goal.svg': 'draw --plan data/disk-two-fixels-insert.wc',
+    'draw-sweep.svg': 'draw --sweep=1/100,1/5,2/5,3/5 data/three-fixels-insert.wc',
+    'draw-graph.svg': 'draw --graph data/three-fixels-insert.wc',
+})
 for name, args in golden.items():
     out = subprocess.run([prog] + args.split(), capture_output=True, check=True).stdout
     open('tests/golden/' + name, 'wb').write(out)

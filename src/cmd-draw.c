@@ -1,0 +1,258 @@
+/* cmd-draw.c -- wrenchcone draw: the paper's figures, as SVG, from exact
+   results.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.  */
+
+#include <config.h>
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "commands.h"
+#include "draw/figure.h"
+
+const char cmd_draw_usage[] =
+    "Usage: " PROG " draw FIGURE [OPTIONS] PROBLEM\n"
+    "Draw a figure of PROBLEM as an SVG document: the part, its centre of mass,\n"
+    "the fixels with their normals and friction cones, and one of\n"
+    "\n"
+    "Figures (exactly one):\n"
+    "  --mode=M         the wrench cone W(M): each generator as a line of force,\n"
+    "                   pure torques as arcs about the centre of mass; dashed:\n"
+    "                   a generator of the closure that W(M) excludes\n"
+    "  --modes          a rotation centre (or a translation) per feasible mode\n"
+    "  --stability      where a frictionless finger may push: the strongly\n"
+    "                   stable sets (both semantics) and the weakly stable set\n"
+    "  --plan           where to push to seat the part: the insertion plan's\n"
+    "                   goal set G_goal\n"
+    "  --sweep=LIST     G_goal for each friction value of the comma-separated\n"
+    "                   LIST (at most 12), one above the other\n"
+    "  --graph          the insertion plan's state-transition graph (at most\n"
+    "                   4 fixels): the transitions it forbids and allows\n"
+    "  --graph --wrench=FX,FY,TAU\n"
+    "                   the transitions the wrench admits under the complete\n"
+    "                   plan (plan --complete), with its verdict\n"
+    "\n"
+    "Options:\n"
+    "  -o, --output=FILE  write the figure to FILE (whole or not at all: a\n"
+    "                   temporary file beside it is renamed at the end);\n"
+    "                   default (and -o -) standard output\n"
+    "  -h, --help       print this help and exit\n"
+    "  -V, --version    print versions and exit\n"
+    "\n"
+    "Every position comes from the exact result, converted to floating point\n"
+    "once; the legend and the caption say what is drawn.\n";
+
+enum { OPT_MODE = 256, OPT_MODES, OPT_STABILITY, OPT_PLAN, OPT_SWEEP,
+       OPT_GRAPH, OPT_OUTPUT, OPT_WRENCH };
+
+const struct option cmd_draw_options[] = {
+    { "mode", required_argument, NULL, OPT_MODE },
+    { "modes", no_argument, NULL, OPT_MODES },
+    { "stability", no_argument, NULL, OPT_STABILITY },
+    { "plan", no_argument, NULL, OPT_PLAN },
+    { "sweep", required_argument, NULL, OPT_SWEEP },
+    { "graph", no_argument, NULL, OPT_GRAPH },
+    { "output", required_argument, NULL, OPT_OUTPUT },
+    { "wrench", required_argument, NULL, OPT_WRENCH },
+    { NULL, 0, NULL, 0 }
+};
+
+/* The longest --sweep list: each value is a plan and a layer.  */
+#define DRAW_MAX_SWEEP 12
+
+typedef struct
+{
+    int kind;               /* OPT_MODE .. OPT_GRAPH, 0 for none */
+    int kinds;              /* how many were given */
+    const char * value;     /* --mode's or --sweep's */
+    const char * output;
+    const char * wrench;    /* --wrench's FX,FY,TAU */
+}
+draw_options;
+
+/* --sweep's list into mu[0..*k), located as <sweep>:1:COL.  */
+static int
+parse_sweep(fmpq * mu, slong * k, const char * s, wc_error_t err)
+{
+    const char * p = s;
+    int status = WC_OK;
+
+    for (*k = 0; status == WC_OK; p++)
+    {
+        const char * e = strchr(p, ',');
+        size_t len = e != NULL ? (size_t) (e - p) : strlen(p);
+
+        if (*k == DRAW_MAX_SWEEP)
+            return wc_error_set(err, WC_EINPUT, "<sweep>", 1, p - s + 1,
+                                "at most %d friction values",
+                                DRAW_MAX_SWEEP);
+        if (wc_parse_number_bounded(mu + *k, p, len, err) != WC_OK)
+        {
+            char * why = wc_error_format(err);
+
+            status = wc_error_set(err, WC_EINPUT, "<sweep>", 1, p - s + 1,
+                                  "%s", why != NULL ? why : "bad number");
+            free(why);
+        }
+        else if (fmpq_sgn(mu + *k) < 0)
+            status = wc_error_set(err, WC_EINPUT, "<sweep>", 1, p - s + 1,
+                                  "a friction coefficient must not be "
+                                  "negative");
+        ++*k;
+        if (e == NULL)
+            break;
+        p = e;
+    }
+    return status;
+}
+
+/* --wrench's FX,FY,TAU into g[0..3), located as <wrench>:1:COL.  */
+static int
+parse_wrench(fmpq * g, const char * s, wc_error_t err)
+{
+    char * copy = malloc(strlen(s) + 1), * v[3], * p;
+    int k, status;
+
+    if (copy == NULL)
+        return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
+    strcpy(copy, s);
+    v[0] = copy;
+    for (k = 1, p = copy; k < 3 && (p = strchr(p, ',')) != NULL; k++)
+    {
+        *p++ = '\0';
+        v[k] = p;
+    }
+    if (k < 3 || strchr(v[2], ',') != NULL)
+        status = wc_error_set(err, WC_EINPUT, "<wrench>", 1, 1,
+                              "a wrench is three numbers FX,FY,TAU");
+    else
+        status = cli_parse_numbers(g, v, 3, "<wrench>", err);
+    free(copy);
+    return status;
+}
+
+static int
+build(_wc_scene_t S, const draw_options * o, const char * path,
+      wc_error_t err)
+{
+    fmpq mu[DRAW_MAX_SWEEP];
+    wc_problem_t P;
+    slong k = 0, i;
+    int status;
+
+    for (i = 0; i < DRAW_MAX_SWEEP; i++)
+        fmpq_init(mu + i);
+    wc_problem_init(P);
+    status = cli_load_problem(P, path, err);
+    if (status == WC_OK && o->kind == OPT_SWEEP)
+        status = parse_sweep(mu, &k, o->value, err);
+    if (status == WC_OK && o->wrench != NULL)
+        status = parse_wrench(mu, o->wrench, err);
+    if (status == WC_OK)
+        switch (o->kind)
+        {
+        case OPT_MODE:
+            status = _wc_draw_mode(S, P, o->value, err);
+            break;
+        case OPT_MODES:
+            status = _wc_draw_modes(S, P, err);
+            break;
+        case OPT_STABILITY:
+            status = _wc_draw_stability(S, P, err);
+            break;
+        case OPT_PLAN:
+            status = _wc_draw_plan(S, P, err);
+            break;
+        case OPT_SWEEP:
+            status = _wc_draw_sweep(S, P, mu, k, err);
+            break;
+        default:
+            status = _wc_draw_graph(S, P, o->wrench != NULL ? mu : NULL, err);
+        }
+    wc_problem_clear(P);
+    for (i = 0; i < DRAW_MAX_SWEEP; i++)
+        fmpq_clear(mu + i);
+    return status;
+}
+
+static int
+put_svg(FILE * f, const void * S)
+{
+    return _wc_svg_fprint(f, S, 1);
+}
+
+/* -1 to go on, or the exit status.  */
+static int
+parse(draw_options * o, const cli_command * self, int argc, char ** argv)
+{
+    cli_options p;
+    int c;
+
+    cli_options_init(&p, self);
+    while ((c = cli_option(&p, argc, argv)) >= 0)
+        if (c == OPT_OUTPUT)
+            o->output = optarg;
+        else if (c == OPT_WRENCH)
+            o->wrench = optarg;
+        else
+        {
+            o->kind = c;
+            o->kinds++;
+            if (c == OPT_MODE || c == OPT_SWEEP)
+                o->value = optarg;
+        }
+    if (c == CLI_EXIT)
+        return p.status;
+    if (o->kinds == 0)
+        return cli_usage_error("draw", "draw needs a figure: --mode=M, "
+                               "--modes, --stability, --plan, --sweep=LIST "
+                               "or --graph%s", "");
+    if (o->kinds > 1)
+        return cli_usage_error("draw", "draw takes one figure at a time%s",
+                               "");
+    if (o->wrench != NULL && o->kind != OPT_GRAPH)
+        return cli_usage_error("draw", "--wrench goes with --graph only%s",
+                               "");
+    if (argc - optind != 1)
+        return cli_usage_error("draw", argc - optind < 1
+                               ? "draw needs PROBLEM%s"
+                               : "draw takes PROBLEM only%s", "");
+    return -1;
+}
+
+static int
+run(const cli_command * self, int argc, char ** argv)
+{
+    draw_options o = { 0, 0, NULL, NULL, NULL };
+    _wc_scene_t S;
+    wc_error_t err;
+    int status;
+
+    if ((status = parse(&o, self, argc, argv)) >= 0)
+        return status;
+    wc_error_init(err);
+    _wc_scene_init(S);
+    status = build(S, &o, argv[optind], err);
+    if (status != WC_OK)
+        cli_report(err, status);
+    else if (o.output != NULL && strcmp(o.output, "-") != 0)
+        status = cli_write_whole(o.output, "figure", put_svg, S);
+    else
+    {
+        _wc_svg_fprint(stdout, S, 1);
+        status = cli_finish_output();
+    }
+    _wc_scene_clear(S);
+    wc_error_clear(err);
+    return status;
+}
+
+int
+cmd_draw(const cli_command * self, int argc, char ** argv)
+{
+    return cli_run_with_output(run, self, argc, argv);
+}
