@@ -54,6 +54,7 @@ SH_TESTS = \
 	tests/cdd-interop.sh \
 	tests/layers.sh \
 	tests/install.sh \
+	tests/dist-files.sh \
 	tests/readme-examples.sh
 TESTS += $(C_TESTS) $(SH_TESTS)
 TEST_EXTENSIONS = .sh
