@@ -2,7 +2,8 @@
 # install.sh -- the installed tree works on its own: `make install
 # DESTDIR=TMP` (the configured prefix, staged under TMP), then
 #   0. the programs, the example problems and the corpus are installed:
-#      every file of data/ is in $(pkgdatadir), byte for byte;
+#      every file of data/ is in $(pkgdatadir), byte for byte; so is the
+#      bash completion;
 #   1. the installed wrenchcone runs an example from the installed
 #      $(pkgdatadir) and prints what the tree's program prints, and the
 #      standalone checker bin/wrenchcone-verify runs;
@@ -53,6 +54,13 @@ for f in "$top_srcdir"/data/*.wc "$top_srcdir"/data/corpus/*; do
     case $f in */corpus/*) to=$data/corpus/${f##*/} ;; *) to=$data/${f##*/} ;; esac
     cmp -s "$f" "$to" || fail "data/${f#"$top_srcdir"/data/} is not installed as $to"
 done
+
+# The bash completion, unless configured --without-bash-completion-dir.
+if grep -q '^bashcompletion_DATA = completion/wrenchcone' "$top_builddir/Makefile"; then
+    c=$(find "$dest" -path '*/completions/wrenchcone' | head -n 1)
+    [ -n "$c" ] && cmp -s "$c" "$top_builddir/completion/wrenchcone" \
+        || fail "the bash completion is not installed (completions/wrenchcone)"
+fi
 
 # 1. The installed program (it links the library statically: no
 # LD_LIBRARY_PATH) runs the README's first example from $(pkgdatadir).

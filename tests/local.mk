@@ -55,6 +55,7 @@ SH_TESTS = \
 	tests/layers.sh \
 	tests/install.sh \
 	tests/dist-files.sh \
+	tests/completion.sh \
 	tests/readme-examples.sh
 TESTS += $(C_TESTS) $(SH_TESTS)
 TEST_EXTENSIONS = .sh
