@@ -5,8 +5,9 @@
 #      every file of data/ is in $(pkgdatadir), byte for byte; so is the
 #      bash completion;
 #   1. the installed wrenchcone runs an example from the installed
-#      $(pkgdatadir) and prints what the tree's program prints, and the
-#      standalone checker bin/wrenchcone-verify runs;
+#      $(pkgdatadir) (the README's "Installing" example) and prints what
+#      the tree's program prints, and the standalone checker
+#      bin/wrenchcone-verify runs;
 #   2. the installed manual pages' examples, which name the installed
 #      problem files, run with the installed program (tests/man-examples.sh);
 #   3. the shared library exports exactly the wc_ functions that the
@@ -69,6 +70,17 @@ fi
 (cd "$top_srcdir" && "$WRENCHCONE" cone data/section4.wc na) > "$tmp/cli" || exit 1
 cmp -s "$tmp/inst" "$tmp/cli" \
     || { diff "$tmp/cli" "$tmp/inst" >&2; fail "the installed program prints another cone"; }
+# The README's "Installing" example, its /usr/local read as the
+# configured prefix (PREFIX/share/wrenchcone is $(pkgdatadir)).
+rp=$(sed -n 's|^    wrenchcone cone \(/usr/local/share/wrenchcone/section4.wc\) na$|\1|p' \
+    "$top_srcdir/README")
+[ -n "$rp" ] || fail "README has no line '    wrenchcone cone /usr/local/share/wrenchcone/section4.wc na'"
+case $pkgdatadir in
+*/share/wrenchcone)
+    prefix=${pkgdatadir%/share/wrenchcone}
+    "$bin/wrenchcone" cone "$dest$prefix${rp#/usr/local}" na | cmp -s - "$tmp/cli" \
+        || fail "README: wrenchcone cone $rp na, installed in $prefix" ;;
+esac
 out=$("$bin/wrenchcone-verify" "$top_srcdir/tests/certs/figure5-ln.json") \
     && [ "$out" = "certificate holds: mode ln is infeasible" ] \
     || fail "installed wrenchcone-verify: $out"
