@@ -6,7 +6,8 @@
 #      distribution; src/wrenchcone, which the build makes, is not asked;
 #   2. the example problems and the corpus are all listed in data/local.mk
 #      (so installed), and everything it lists exists;
-#   3. every file of fuzz/ is in the distribution.
+#   3. every file of fuzz/ and of the folders of tests/ is in the
+#      distribution.
 # The distribution is DIST_DIR when set (the distcheck-hook passes the
 # unpacked tarball); otherwise `make distdir` makes one in a scratch folder.
 #
@@ -57,11 +58,14 @@ while read -r f; do
     [ -f "$DIST_DIR/$f" ] || fail "the distribution lacks $f"
 done < "$tmp/listed"
 
-# 3. The fuzz targets and their corpora (Makefile.am lists the files).
-(cd "$top_srcdir" && find fuzz -type f) | while read -r f; do
+# 3. The fuzz targets and their corpora (Makefile.am lists the files), and
+# the files of the tests' folders (a folder in EXTRA_DIST whose name is
+# also a make target, such as tests/install beside tests/install.sh,
+# would be made instead of copied).
+(cd "$top_srcdir" && find fuzz tests/*/ -type f ! -path '*/.*') | while read -r f; do
     [ -f "$DIST_DIR/$f" ] || echo "$f"
 done > "$tmp/fuzz"
-while read -r f; do fail "the distribution lacks $f (EXTRA_DIST in Makefile.am)"; done < "$tmp/fuzz"
+while read -r f; do fail "the distribution lacks $f (EXTRA_DIST)"; done < "$tmp/fuzz"
 
 [ $fails -eq 0 ] || { echo "$fails failure(s)" >&2; exit 1; }
 exit 0

@@ -69,7 +69,7 @@ AM_TESTS_ENVIRONMENT = \
 	export WRENCHCONE top_srcdir top_builddir CC WC_SAN MAKE LSAN_OPTIONS;
 
 EXTRA_DIST += $(SH_TESTS) tests/bad tests/golden tests/certs tests/lsan.supp \
-	tests/update-golden.py tests/install tests/cert-tamper.py
+	tests/update-golden.py tests/install/one-cone.c tests/cert-tamper.py
 
 # The C tests' names, for running them alone (.ci/run widens them).
 print-c-tests:
