@@ -95,7 +95,11 @@ for p in "$mandir"/man1/wrenchcone.1 "$mandir"/man5/wrenchcone.5 \
     # a sed replacement: \ & | escaped; - is written \- in the pages
     d=$(printf '%s\n' "$pkgdatadir" | sed -e 's/[\\&|]/\\&/g' -e 's/-/\\\\-/g')
     e=$(printf '%s\n' "$dest$pkgdatadir" | sed -e 's/[\\&|]/\\&/g' -e 's/-/\\\\-/g')
-    sed "s|$d/|$e/|g" "$p" > "$tmp/man/${p##*/}" || exit 99
+    # the pages' scratch files /tmp/wrenchcone-*, which man-examples.sh
+    # may be writing at the same time, go to $tmp/run
+    r=$(printf '%s\n' "$tmp/run" | sed -e 's/[\\&|]/\\&/g' -e 's/-/\\\\-/g')
+    sed -e "s|$d/|$e/|g" -e "s|/tmp/wrenchcone|$r/wrenchcone|g" "$p" > "$tmp/man/${p##*/}" \
+        || exit 99
 done
 WRENCHCONE=$bin/wrenchcone WC_MAN_DIR=$tmp/man WC_MAN_RUN_DIR=$tmp/run \
     sh "$top_srcdir/tests/man-examples.sh" \
