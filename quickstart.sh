@@ -7,9 +7,13 @@ cd "$(dirname "$0")"
 
 pkgs="build-essential autoconf automake libtool pkg-config libgmp-dev libmpfr-dev libflint-dev libcdd-dev"
 missing=
-for p in $pkgs; do
-    dpkg-query -W -f='${Status}' "$p" 2> /dev/null | grep -q 'ok installed' || missing="$missing $p"
-done
+if command -v dpkg-query > /dev/null 2>&1; then
+    for p in $pkgs; do
+        dpkg-query -W -f='${Status}' "$p" 2> /dev/null | grep -q 'ok installed' || missing="$missing $p"
+    done
+else
+    echo "quickstart: not Debian (no dpkg-query): install GMP, MPFR, FLINT and cddlib yourself"
+fi
 if [ -n "$missing" ]; then
     echo "quickstart: installing$missing"
     if [ "$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi
@@ -22,5 +26,5 @@ fi
 make -j"$(nproc 2> /dev/null || echo 2)"
 
 echo
-echo "\$ wrenchcone cone data/section4.wc na"
+echo "\$ ./src/wrenchcone cone data/section4.wc na"
 ./src/wrenchcone cone data/section4.wc na

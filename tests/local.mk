@@ -57,7 +57,9 @@ SH_TESTS = \
 	tests/install.sh \
 	tests/readme-examples.sh \
 	tests/cli-draw.sh \
-	tests/cli-report.sh
+	tests/cli-report.sh \
+	tests/dist-files.sh \
+	tests/completion.sh
 TESTS += $(C_TESTS) $(SH_TESTS)
 TEST_EXTENSIONS = .sh
 SH_LOG_COMPILER = $(SHELL)
@@ -70,7 +72,7 @@ AM_TESTS_ENVIRONMENT = \
 	export WRENCHCONE top_srcdir top_builddir CC WC_SAN MAKE LSAN_OPTIONS;
 
 EXTRA_DIST += $(SH_TESTS) tests/bad tests/golden tests/certs tests/lsan.supp \
-	tests/update-golden.py tests/install tests/cert-tamper.py \
+	tests/update-golden.py tests/install/one-cone.c tests/cert-tamper.py \
 	tests/png-pixels.py
 
 # The C tests' names, for running them alone (.ci/run widens them).

@@ -20,6 +20,8 @@
 # \(aq may appear in those blocks; anything else is an error here rather
 # than a silent mismatch.  man/wrenchcone.1 must hold at least 4 commands.
 # The pages run: wrenchcone.1, wrenchcone.5 and wrenchcone-certificate.5.
+# WC_MAN_DIR names another folder of these pages and WC_MAN_RUN_DIR the
+# folder to run them from (tests/install.sh runs the installed pages so).
 #
 # tests/man-lint.sh checks that the pages are "mandoc -Tlint" clean.
 #
@@ -35,9 +37,11 @@ if [ ! -x "$WRENCHCONE" ]; then
     exit 99
 fi
 
-page1=$top_srcdir/man/wrenchcone.1
-page5=$top_srcdir/man/wrenchcone.5
-page5c=$top_srcdir/man/wrenchcone-certificate.5
+mandir=${WC_MAN_DIR:-$top_srcdir/man}
+rundir=${WC_MAN_RUN_DIR:-$top_srcdir}
+page1=$mandir/wrenchcone.1
+page5=$mandir/wrenchcone.5
+page5c=$mandir/wrenchcone-certificate.5
 min_examples=4
 
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/man-examples.XXXXXX") || exit 99
@@ -137,7 +141,7 @@ run_examples() {
     while [ "$i" -le "$2" ]; do
         base=$1.$i
         cmd=$(cat "$base.cmd")
-        (cd "$top_srcdir" && eval "$cmd") </dev/null >"$base.stdout" 2>"$base.stderr"
+        (cd "$rundir" && eval "$cmd") </dev/null >"$base.stdout" 2>"$base.stderr"
         status=$?
         if [ "$status" -ne 0 ]; then
             failed "exit status $status: $cmd"
