@@ -219,4 +219,38 @@ done
 "$W" verify "$tmp/null.json" 2>&1 | grep -q "the tree has null for this region" \
     || fail "a missing region is not named"
 
+# A piece whose inequalities describe a 3-D cone around its 2-D rays (two
+# opposite corners of a quadrilateral), every incidence check passing but
+# the dimension: a leaf would place by the inequalities a region outside
+# the rays' cone, and a false claim (an open ray of strongly stable
+# wrenches dropped) would hold.  The equalities' rank must catch it.
+"$W" stability --certificate="$tmp/p.json" "$D/peg-in-hole.wc" > /dev/null
+python3 - "$tmp/p.json" "$tmp/fat.json" <<'PY' || fail "fat piece setup"
+import json, sys
+def cross(u, v): return [u[1]*v[2]-u[2]*v[1], u[2]*v[0]-u[0]*v[2], u[0]*v[1]-u[1]*v[0]]
+def dot(u, v): return sum(a*b for a, b in zip(u, v))
+d = json.load(open(sys.argv[1]))
+P = d["strong"]["pieces"]
+r1, r2 = ([int(x) for x in r] for r in P[1]["rays"])
+b = [5, -2, 3]
+c = [x + y for x, y in zip(r1, r2)]
+p = [10*x - y for x, y in zip(b, c)]
+q = [1000*x - y for x, y in zip(c, p)]
+V = [r1, p, r2, q]
+H = []
+for i in range(4):
+    n = cross(V[i], V[(i+1) % 4])
+    n = [-x for x in n] if dot(n, V[(i+2) % 4]) > 0 else n
+    H.append([str(x) for x in n])
+P[1]["inequalities"] = H
+P[1]["equalities"] = []
+P[2]["faces"][2]["included"] = False
+d["tree"][25] = {"in": True, "piece": 1, "piece_face": 3}
+json.dump(d, open(sys.argv[2], "w"))
+PY
+"$W" verify "$tmp/fat.json" > "$tmp/v" 2>&1
+st=$?
+[ $st -eq 4 ] && grep -q "has dim 2, but its equalities have rank 0" "$tmp/v" \
+    || fail "a piece with a 3-D constraint cone around 2-D rays: exit $st: $(cat "$tmp/v")"
+
 exit $failed

@@ -60,8 +60,9 @@ contains() {
 }
 
 t 'wrenchcone|co' 'compare cone'
-t 'wrenchcone|' 'classify compare cone feasible modes plan random stability sweep verify'
+t 'wrenchcone|' 'classify compare cone draw feasible modes plan random report stability sweep verify'
 t 'wrenchcone|--' '--help --version'
+contains 'wrenchcone|draw|--' --mode= --modes --stability --plan --sweep= --graph
 contains 'wrenchcone|stability|--' --certificate= --bias= --length= --format= --progress --help
 t 'wrenchcone|cone|--m' '--method='
 t 'wrenchcone|modes|--w' '--witness'

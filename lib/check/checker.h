@@ -447,8 +447,9 @@ int _wc_check_stability_certificate(wc_check_reader * c,
 #define WC_CHECK_KIND_PLAN "plan-goal"
 #define WC_CHECK_KIND_CRIT "critical-friction"
 
-/* The most rays, summed over the regions a tree cuts, that the checker
-   reads (far more than a certificate of wrenchcone has).  */
+/* The most work on a tree the checker does: rays of the regions cut, and
+   rays times constraints at the leaves (far more than a certificate of
+   wrenchcone needs).  */
 #define WC_CHECK_TREE_WORK (1UL << 26)
 
 /* One piece of a claimed set (or a moving face's cone): the closure
@@ -530,7 +531,7 @@ typedef struct
     size_t basis[3];            /* the tree's first three planes */
     wc_check_leaf leaf;
     size_t leaves;              /* the tree's leaves */
-    size_t work;                /* rays of the regions cut so far */
+    size_t work;                /* the tree's work so far */
     int too_big;                /* the walk stopped at WC_CHECK_TREE_WORK */
     mpq_t * G;                  /* 3 */
     mpq_t * F;                  /* 3 (the most generators of a face) */

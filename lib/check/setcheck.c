@@ -354,8 +354,9 @@ _wc_check_set_certificate(wc_check_reader * c, const wc_json_node * root,
                        (unsigned long) K.leaves);
         h = check_set(why, &K);
         if (K.too_big)
-            _wc_check_bad(c, K.tree, "the tree's regions have more than %lu "
-                          "rays in all, more than verify reads",
+            _wc_check_bad(c, K.tree, "the tree needs more than %lu steps "
+                          "(rays of its regions, and rays times constraints "
+                          "at its leaves), more than verify reads",
                           (unsigned long) WC_CHECK_TREE_WORK);
         else if (h < 0)
             _wc_check_nomem(c);

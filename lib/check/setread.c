@@ -482,6 +482,18 @@ piece_spaces(wc_check_text * why, claim_scratch * X, wc_check_piece * Q,
                        Q->dim, rk);
         return 0;
     }
+    /* the constraints' cone lies in the rays' span only when the
+       equalities cut out a space of that dimension; then the incidences
+       below make the two descriptions the same cone */
+    if ((v = gather(X, Q->eq, Q->neq, NULL, 0)) == NULL)
+        return -1;
+    if ((rk = rank3(v, Q->neq, X->w, X->d, X->t)) != 3 - Q->dim)
+    {
+        piece_says(why, k);
+        _wc_check_putf(why, "has dim %ld, but its equalities have rank %d",
+                       Q->dim, rk);
+        return 0;
+    }
     if ((rk = piece_incidence(why, X, Q, k)) != 1)
         return rk;
     for (f = 0; f < Q->nfaces; f++)

@@ -15,8 +15,9 @@
    whatever the certificate says; a null for a region that is not empty,
    or a node for one that is, fails, and so does a cut by a plane that
    leaves the region on one side (so a path cuts by each plane at most
-   once, and a region has at most planes + 3 rays).  The regions cut may
-   have WC_CHECK_TREE_WORK rays in all; a larger tree is refused.
+   once, and a region has at most planes + 3 rays).  The rays of the
+   regions cut, and rays times constraints at the leaves, may come to
+   WC_CHECK_TREE_WORK in all; a larger tree is refused.
 
    A leaf says where its region R lies, over the extreme rays r_1 .. r_k
    of its closure and their sum s, a point of R:
@@ -88,6 +89,8 @@ _wc_check_set_read_leaf(wc_check_reader * c, wc_check_set * K,
         != WC_OK)
         return WC_EINPUT;
     Q = L->in ? K->claim.pc + L->owner : K->mc + L->owner;
+    if (Q->nfaces == 0)
+        return _wc_check_bad(c, v, "a leaf names an empty cone");
     return read_index(c, v, L->in ? "piece_face" : "cone_face", Q->nfaces,
                       &L->face);
 }
@@ -244,7 +247,13 @@ check_leaf(wc_check_scratch * X, wc_check_set * K, size_t entry,
                        (unsigned long) L->face + 1, L->in ? "piece" : K->plan
                        ? "the cone of string" : "the cone of moving face",
                        (unsigned long) L->owner + 1);
-        if (!Q->fincl[L->face])
+        K->work += (R->n + 1) * (Q->nineq + Q->neq);
+        if (K->work > WC_CHECK_TREE_WORK)
+        {
+            K->too_big = 1;
+            holds = 0;
+        }
+        else if (!Q->fincl[L->face])
         {
             _wc_check_put(X->why, "the cone does not include that face");
             holds = 0;
