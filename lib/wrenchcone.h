@@ -33,5 +33,6 @@
 #include "analysis/plan.h"
 #include "core/version.h"
 #include "core/progress.h"
+#include "api/request.h"
 
 #endif

@@ -18,6 +18,7 @@
 
 #include "wrenchcone.h"
 #include "cli-base.h"
+#include "api/run.h"
 
 #define PROG "wrenchcone"
 
@@ -124,6 +125,21 @@ char ** cli_expand_output(int argc, char ** argv, char *** owned,
    reported (exit status 3).  */
 int cli_run_with_output(int (*run)(const cli_command *, int, char **),
                         const cli_command * self, int argc, char ** argv);
+
+/* --- cli-request.c: --format=json through the library --- */
+
+/* An input of the library's request from a command-line path ("-" reads
+   stdin, named "<stdin>").  */
+void cli_input(_wc_input * in, const char * path);
+
+/* Answer R and print its JSON (exactly what batch and wc_request_json
+   give), or report its error: the exit status (4 for a comparison beyond
+   its tolerance).  */
+int cli_run_json(const _wc_request * R);
+
+/* cone --all-modes: every mode's cone JSON, one line each, written once
+   all are computed; the exit status.  */
+int cli_cone_all_modes(const _wc_request * R);
 
 /* --- cli-options.c: options and operands --- */
 

@@ -124,6 +124,18 @@ cmd_classify(const cli_command * self, int argc, char ** argv)
         return cli_usage_error("classify", argc - optind < 4
                                ? "classify needs PROBLEM FX FY TAU%s"
                                : "classify takes PROBLEM FX FY TAU only%s", "");
+    if (o.fmt == FMT_JSON && o.certificate == NULL)
+    {
+        _wc_request R;
+
+        _wc_request_init(&R, _WC_CLASSIFY);
+        cli_input(&R.problem, argv[optind]);
+        R.nwrench = 3;
+        for (k = 0; k < 3; k++)
+            R.wrench[k] = argv[optind + 1 + k];
+        R.max_modes = o.max_modes;
+        return cli_run_json(&R);
+    }
     wc_problem_init(P);
     wc_error_init(err);
     wc_classify_init(R);

@@ -126,6 +126,17 @@ cmd_compare(const cli_command * self, int argc, char ** argv)
     if (strcmp(ppath, "-") == 0 && strcmp(fpath, "-") == 0)
         return cli_usage_error("compare", "PROBLEM and FILE cannot both be "
                                "standard input%s", "");
+    if (json)
+    {
+        _wc_request Q;
+
+        _wc_request_init(&Q, _WC_COMPARE);
+        cli_input(&Q.problem, ppath);
+        Q.mode = mode;
+        cli_input(&Q.foreign, fpath);
+        Q.tol = tol;
+        return cli_run_json(&Q);
+    }
     wc_error_init(err);
     wc_cone_init(W, 3);
     wc_comparison_init(R);

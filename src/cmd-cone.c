@@ -15,6 +15,7 @@
 
 const char cmd_cone_usage[] =
     "Usage: " PROG " cone [OPTIONS] PROBLEM MODE\n"
+    "  or:  " PROG " cone --all-modes [OPTIONS] PROBLEM\n"
     "Print W(MODE), the exact cone of external wrenches (fx, fy, torque)\n"
     "consistent with MODE, in canonical form: closure facets, rays, and every\n"
     "face of the closure with whether it belongs to the cone.\n"
@@ -34,16 +35,20 @@ const char cmd_cone_usage[] =
     "                   with cddlib's double-precision build, the floating-point\n"
     "                   baseline (needs --method=paper, no --trace; unit-length\n"
     "                   vectors, a strict flag per facet and ray instead of faces)\n"
+    "  --all-modes      the cone of every mode that 'modes' lists, in its order,\n"
+    "                   one JSON line each (as --format=json prints it); at most\n"
+    "                   10000 modes\n"
     "  -h, --help       print this help and exit\n"
     "  -V, --version    print versions and exit\n";
 
-enum { OPT_FORMAT = 256, OPT_METHOD, OPT_TRACE, OPT_ARITH };
+enum { OPT_FORMAT = 256, OPT_METHOD, OPT_TRACE, OPT_ARITH, OPT_ALL };
 
 const struct option cmd_cone_options[] = {
     { "format", required_argument, NULL, OPT_FORMAT },
     { "method", required_argument, NULL, OPT_METHOD },
     { "trace", no_argument, NULL, OPT_TRACE },
     { "arith", required_argument, NULL, OPT_ARITH },
+    { "all-modes", no_argument, NULL, OPT_ALL },
     { NULL, 0, NULL, 0 }
 };
 
@@ -53,6 +58,8 @@ typedef struct
     wc_method method;
     int trace;
     int arith_double;   /* --arith=double */
+    int all_modes;      /* --all-modes */
+    int fmt_given;
 }
 cone_options;
 
@@ -67,6 +74,8 @@ parse(cone_options * o, const cli_command * self, int argc, char ** argv)
     o->method = WC_METHOD_DIRECT;
     o->trace = 0;
     o->arith_double = 0;
+    o->all_modes = 0;
+    o->fmt_given = 0;
     cli_options_init(&p, self);
     while ((c = cli_option(&p, argc, argv)) >= 0)
         switch (c)
@@ -74,6 +83,10 @@ parse(cone_options * o, const cli_command * self, int argc, char ** argv)
         case OPT_FORMAT:
             if (!cli_parse_format(&o->fmt, optarg, "cone", 1))
                 return WC_EUSAGE;
+            o->fmt_given = 1;
+            break;
+        case OPT_ALL:
+            o->all_modes = 1;
             break;
         case OPT_METHOD:
             if (strcmp(optarg, "direct") == 0)
@@ -98,7 +111,7 @@ parse(cone_options * o, const cli_command * self, int argc, char ** argv)
 }
 
 /* --method=paper --arith=double: the float baseline, printed by
-   floatcone.c.  */
+   floatcone.c (JSON: cli_run_json).  */
 static int
 cone_double(cli_format fmt, const char * path, const char * mode)
 {
@@ -120,14 +133,6 @@ cone_double(cli_format fmt, const char * path, const char * mode)
         printf("W(%s): wrench cone of mode %s\n", mode, mode);
         wc_fcone_fprint(stdout, W, WC_FCONE_TEXT);
     }
-    else if (fmt == FMT_JSON)
-    {
-        fputs("{\"mode\": ", stdout);
-        wc_fprint_json_string(stdout, mode);
-        fputs(", \"cone\": ", stdout);
-        wc_fcone_fprint(stdout, W, WC_FCONE_JSON);
-        fputs("}\n", stdout);
-    }
     else
     {
         printf("* wrenchcone: W(%s), the wrench cone of mode %s\n", mode, mode);
@@ -142,7 +147,8 @@ cone_double(cli_format fmt, const char * path, const char * mode)
     return status;
 }
 
-/* Print the cone (and its trace); title: the cdd formats' title.  */
+/* Print the cone (and its trace) as text or cdd (JSON: cli_run_json);
+   title: the cdd formats' title.  */
 static void
 print_cone(const cone_options * o, const char * mode, const wc_cone_t W,
            const wc_trace_t T, const char * title)
@@ -159,19 +165,6 @@ print_cone(const cone_options * o, const char * mode, const wc_cone_t W,
         }
         printf("W(%s): wrench cone of mode %s\n", mode, mode);
         wc_cone_fprint_text(stdout, W, "  ");
-        break;
-    case FMT_JSON:
-        fputs("{\"mode\": ", stdout);
-        wc_fprint_json_string(stdout, mode);
-        fputs(", \"cone\": ", stdout);
-        wc_cone_fprint_json(stdout, W);
-        if (o->trace)
-        {
-            fprintf(stdout, ", \"method\": \"%s\", \"trace\": ",
-                    o->method == WC_METHOD_PAPER ? "paper" : "direct");
-            wc_trace_fprint_json(stdout, T);
-        }
-        fputs("}\n", stdout);
         break;
     default:
         if (o->trace)
@@ -195,6 +188,44 @@ cdd_title(const char * mode)
     return title;
 }
 
+/* The request of the options o, for PROBLEM path and mode.  */
+static void
+request(_wc_request * R, const cone_options * o, const char * path,
+        const char * mode)
+{
+    _wc_request_init(R, _WC_CONE);
+    cli_input(&R->problem, path);
+    R->mode = mode;
+    R->method = o->method;
+    R->trace = o->trace;
+    R->arith_double = o->arith_double;
+}
+
+static int
+json(const cone_options * o, const char * path, const char * mode)
+{
+    _wc_request R;
+
+    request(&R, o, path, mode);
+    return cli_run_json(&R);
+}
+
+static int
+all_modes(const cone_options * o, int argc, char ** argv)
+{
+    _wc_request R;
+
+    if (o->fmt_given && o->fmt != FMT_JSON)
+        return cli_usage_error("cone", "--all-modes prints JSON lines: "
+                               "--format=json or none%s", "");
+    if (argc - optind != 1)
+        return cli_usage_error("cone", argc - optind < 1
+                               ? "cone --all-modes needs PROBLEM%s"
+                               : "cone --all-modes takes PROBLEM only%s", "");
+    request(&R, o, argv[optind], NULL);
+    return cli_cone_all_modes(&R);
+}
+
 int
 cmd_cone(const cli_command * self, int argc, char ** argv)
 {
@@ -213,11 +244,15 @@ cmd_cone(const cli_command * self, int argc, char ** argv)
         return cli_usage_error("cone", "--arith=double needs --method=paper%s", "");
     if (o.arith_double && o.trace)
         return cli_usage_error("cone", "--arith=double does not take --trace%s", "");
+    if (o.all_modes)
+        return all_modes(&o, argc, argv);
     if (argc - optind != 2)
         return cli_usage_error("cone", argc - optind < 2
                                ? "cone needs PROBLEM and MODE%s"
                                : "cone takes PROBLEM and MODE only%s", "");
     mode = argv[optind + 1];
+    if (o.fmt == FMT_JSON)
+        return json(&o, argv[optind], mode);
     if (o.arith_double)
         return cone_double(o.fmt, argv[optind], mode);
 
@@ -230,7 +265,7 @@ cmd_cone(const cli_command * self, int argc, char ** argv)
         status = wc_mode_check(P, mode, WC_TABLE_CONE, err);
     if (status == WC_OK)
         status = wc_wrench_cone(W, o.trace ? T : NULL, P, mode, o.method, err);
-    if (status == WC_OK && o.fmt != FMT_TEXT && o.fmt != FMT_JSON
+    if (status == WC_OK && o.fmt != FMT_TEXT
         && (title = cdd_title(mode)) == NULL)
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
     if (status != WC_OK)

@@ -70,6 +70,15 @@ cmd_feasible(const cli_command * self, int argc, char ** argv)
         return cli_usage_error("feasible", argc - optind < 2
                                ? "feasible needs PROBLEM and MODE%s"
                                : "feasible takes PROBLEM and MODE only%s", "");
+    if (fmt == FMT_JSON && certificate == NULL)
+    {
+        _wc_request R;
+
+        _wc_request_init(&R, _WC_FEASIBLE);
+        cli_input(&R.problem, argv[optind]);
+        R.mode = argv[optind + 1];
+        return cli_run_json(&R);
+    }
     wc_problem_init(P);
     wc_error_init(err);
     wc_certificate_init(C);

@@ -54,6 +54,15 @@ cmd_modes(const cli_command * self, int argc, char ** argv)
         return cli_usage_error("modes", argc - optind < 1
                                ? "modes needs PROBLEM%s"
                                : "modes takes PROBLEM only%s", "");
+    if (fmt == FMT_JSON)
+    {
+        _wc_request R;
+
+        _wc_request_init(&R, _WC_MODES);
+        cli_input(&R.problem, argv[optind]);
+        R.witness = witness;
+        return cli_run_json(&R);
+    }
     wc_problem_init(P);
     wc_error_init(err);
     wc_modes_init(M);

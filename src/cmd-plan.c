@@ -93,6 +93,18 @@ cmd_plan(const cli_command * self, int argc, char ** argv)
     if (with_wrench && certificate != NULL)
         return cli_usage_error("plan", "--certificate certifies G_goal, "
                                "not one wrench: drop FX FY TAU%s", "");
+    if (fmt == FMT_JSON && certificate == NULL)
+    {
+        _wc_request R;
+
+        _wc_request_init(&R, _WC_PLAN);
+        cli_input(&R.problem, argv[optind]);
+        R.nwrench = with_wrench ? 3 : 0;
+        for (k = 0; k < R.nwrench; k++)
+            R.wrench[k] = argv[optind + 1 + k];
+        R.complete = complete;
+        return cli_run_json(&R);
+    }
     wc_problem_init(P);
     wc_error_init(err);
     wc_plan_init(R);

@@ -291,6 +291,19 @@ cmd_stability(const cli_command * self, int argc, char ** argv)
         return cli_usage_error("stability", "--bias takes three numbers "
                                "FX,FY,TAU, not '%s'", bias);
     }
+    if (fmt == FMT_JSON && certificate == NULL)
+    {
+        _wc_request R;
+
+        _wc_request_init(&R, _WC_STABILITY);
+        cli_input(&R.problem, argv[optind]);
+        R.biased = bias != NULL;
+        memcpy(R.bias, values, sizeof values);
+        R.length = length;
+        status = cli_run_json(&R);
+        free(copy);
+        return status;
+    }
     wc_error_init(err);
     answer_init(&a);
     a.biased = bias != NULL;

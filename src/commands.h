@@ -58,4 +58,8 @@ int cmd_report(const cli_command * self, int argc, char ** argv);
 extern const char cmd_report_usage[];
 extern const struct option cmd_report_options[];
 
+int cmd_batch(const cli_command * self, int argc, char ** argv);
+extern const char cmd_batch_usage[];
+extern const struct option cmd_batch_options[];
+
 #endif

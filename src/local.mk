@@ -10,7 +10,7 @@ src_wrenchcone_SOURCES = src/wrenchcone.c src/commands.h \
 	src/cmd-cone.c src/cmd-modes.c src/cmd-feasible.c src/cmd-verify.c \
 	src/cmd-random.c src/cmd-compare.c src/cmd-classify.c \
 	src/cmd-stability.c src/cmd-plan.c src/cmd-sweep.c \
-	src/cmd-draw.c src/cmd-report.c
+	src/cmd-draw.c src/cmd-report.c src/cmd-batch.c src/cli-request.c
 src_wrenchcone_LDADD = lib/libwc.la
 
 # The standalone certificate checker: the check library and GMP, nothing

@@ -45,6 +45,9 @@ static const char usage[] =
     "  report PROBLEM -o FILE.html\n"
     "                         every analysis of PROBLEM on one HTML page, with\n"
     "                         its figures\n"
+    "  batch [FILE]           JSON Lines requests in (cone, modes, feasible,\n"
+    "                         classify, stability, plan, compare), one JSON\n"
+    "                         answer line out per request\n"
     "\n"
     "PROBLEM is a .wc problem file (see wrenchcone(5)); '-' reads standard input.\n"
     "Options of every command: --format=text|json, -h/--help, -V/--version,\n"
@@ -70,6 +73,7 @@ const cli_command cli_commands[] = {
     COMMAND(sweep, CLI_SHARED),
     COMMAND(draw, 0),
     COMMAND(report, 0),
+    COMMAND(batch, 0),
     { NULL, NULL, NULL, NULL, 0 }
 };
 

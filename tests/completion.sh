@@ -60,7 +60,7 @@ contains() {
 }
 
 t 'wrenchcone|co' 'compare cone'
-t 'wrenchcone|' 'classify compare cone draw feasible modes plan random report stability sweep verify'
+t 'wrenchcone|' 'batch classify compare cone draw feasible modes plan random report stability sweep verify'
 t 'wrenchcone|--' '--help --version'
 contains 'wrenchcone|draw|--' --mode= --modes --stability --plan --sweep= --graph
 contains 'wrenchcone|stability|--' --certificate= --bias= --length= --format= --progress --help

@@ -27,6 +27,7 @@ problems=$(awk '
         if (l == "float") return 4
         if (l == "io") return 5
         if (l == "draw") return 6
+        if (l == "api") return 7
         return 99
     }
     FNR == 1 {

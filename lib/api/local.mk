@@ -1,0 +1,11 @@
+# lib/api -- requests: a computing command from its arguments (given by
+# the command line, or as a JSON request) to its answer's JSON.
+
+lib_libwc_la_SOURCES += \
+	lib/api/run.c \
+	lib/api/request.c
+wcapidir = $(pkgincludedir)/api
+wcapi_HEADERS = \
+	lib/api/request.h
+noinst_HEADERS += \
+	lib/api/run.h

@@ -1,0 +1,155 @@
+/* run.h -- one computing command, from its parsed arguments to its
+   answer and the answer's JSON: the code that `wrenchcone COMMAND
+   --format=json`, `wrenchcone batch` and wc_request_json share, so that
+   their outputs cannot drift apart.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Internal (not installed).  The command line fills a _wc_request from
+   its options and operands, the request reader (request.c) from a JSON
+   request; both then call _wc_run, which reads the inputs, checks and
+   computes in the order the command line always has (so the first error
+   is the same), and _wc_answer_fprint_json, which writes exactly what
+   `COMMAND --format=json` prints.  */
+
+#ifndef WC_API_RUN_H
+#define WC_API_RUN_H
+
+#include <stdio.h>
+
+#include "core/problem.h"
+#include "exact/cone.h"
+#include "analysis/wrench.h"
+#include "analysis/kinematics.h"
+#include "analysis/stability.h"
+#include "analysis/plan.h"
+#include "float/floatcone.h"
+#include "float/compare.h"
+
+/* The computing commands.  */
+typedef enum
+{
+    _WC_CONE = 0,
+    _WC_MODES,
+    _WC_FEASIBLE,
+    _WC_CLASSIFY,
+    _WC_STABILITY,
+    _WC_PLAN,
+    _WC_COMPARE,
+    _WC_NCOMMANDS
+}
+_wc_command;
+
+/* The command's name, "cone" ... "compare"; -1 from _wc_command_find
+   when name is none of them.  */
+const char * _wc_command_name(_wc_command c);
+int _wc_command_find(const char * name);
+
+/* Inputs larger than this are refused before they are parsed (the
+   command line's limit on a problem or a foreign cone file).  */
+#define _WC_MAX_INPUT_BYTES ((size_t) 256 << 20)
+
+/* One input text: read from stream when it is not NULL (the command line
+   passes stdin for "-"), else from the file path when text is NULL, else
+   text[0..len) itself.  name is how errors and reports name it (the
+   path, "<stdin>", "<problem_text>").  */
+typedef struct
+{
+    const char * name;
+    const char * path;
+    FILE * stream;
+    const char * text;
+    size_t len;
+}
+_wc_input;
+
+/* A command's arguments.  Numbers are kept as written, read (and their
+   errors located, "<wrench>:1:COL") when the command needs them, after
+   the problem, as on the command line.  */
+typedef struct
+{
+    _wc_command command;
+    _wc_input problem;
+    const char * mode;          /* cone, feasible, compare */
+    wc_method method;           /* cone */
+    int trace;                  /* cone */
+    int arith_double;           /* cone: --arith=double (with paper) */
+    int witness;                /* modes */
+    long max_modes;             /* classify: 0 is no limit */
+    int certificates;           /* classify: compute certificates too */
+    int complete;               /* plan */
+    int nwrench;                /* classify 3; plan 0 or 3 */
+    const char * wrench[3];
+    int biased;                 /* stability --bias */
+    const char * bias[3];
+    const char * length;        /* stability --length, or NULL */
+    _wc_input foreign;          /* compare's FILE */
+    double tol;                 /* compare */
+}
+_wc_request;
+
+/* Defaults: every option as the command line has it without options.  */
+void _wc_request_init(_wc_request * R, _wc_command c);
+
+/* The answer of one request.  */
+typedef struct
+{
+    _wc_command command;
+    wc_problem_t P;
+    wc_cone_t W;
+    wc_trace_t T;
+    wc_fcone_t F;
+    wc_modes_t M;
+    wc_certificate_t C;
+    wc_classify_t K;
+    wc_stability_t S;
+    wc_plan_t plan;
+    wc_plan_wrench_t pw;
+    wc_comparison_t cmp;
+    fmpq g[3];                  /* the wrench */
+    fmpq b[3];                  /* the bias */
+    fmpq_t L;                   /* the norm's length, 1 by default */
+    fmpq_t rho[2];              /* robustness in strong, strong_paper */
+    int closed[2], infinite[2], in_set[2];
+    const _wc_request * R;      /* the request answered (not owned) */
+}
+_wc_answer;
+
+void _wc_answer_init(_wc_answer * A);
+void _wc_answer_clear(_wc_answer * A);
+
+/* Answer R into A (A freshly initialised; R must outlive A's use).
+   Returns WC_OK, or WC_EINPUT / WC_EINTERNAL with err set as the command
+   line reports it.  A comparison that finds a difference is WC_OK here:
+   _wc_answer_status says WC_EDISAGREE.  */
+int _wc_run(_wc_answer * A, const _wc_request * R, wc_error_t err);
+
+/* The status of a computed answer: WC_EDISAGREE for a comparison beyond
+   its tolerance, else WC_OK.  */
+int _wc_answer_status(const _wc_answer * A);
+
+/* The answer's JSON, exactly as `COMMAND --format=json` prints it (one
+   line and its newline).  WC_OK or WC_EINTERNAL on a write error.  */
+int _wc_answer_fprint_json(FILE * out, const _wc_answer * A);
+
+/* cone --all-modes: the cone of every mode that `modes` lists, in its
+   order (ASCII-sorted), one `cone --format=json` line each.  R is a cone
+   request (its mode unused).  Refuses (WC_EINPUT, nothing written) when
+   the problem has more than _WC_ALL_MODES_MAX modes.  */
+#define _WC_ALL_MODES_MAX 10000
+int _wc_cone_all_modes(FILE * out, const _wc_request * R, wc_error_t err);
+
+/* The whole of an input into a malloc'd *text of *len bytes (at most
+   _WC_MAX_INPUT_BYTES), with the command line's messages: "cannot open:
+   ...", "file too large (over N bytes)", "read error: ...".  */
+int _wc_input_read(char ** text, size_t * len, const _wc_input * in,
+                   wc_error_t err);
+
+/* An error record as one JSON line:
+   {"error": {"message", "file", "line", "column", "status"}}, unknown
+   parts null.  */
+int _wc_error_fprint_json(FILE * out, const wc_error_t err, int status);
+
+#endif
