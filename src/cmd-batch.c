@@ -56,6 +56,12 @@ answer_lines(FILE * f, const char * name)
         lineno++;
         if (strspn(line, " \t\r\n") == (size_t) n)
             continue;
+        /* The line without its end, so that an error at the end of the
+           request is located on its line.  */
+        if (n > 0 && line[n - 1] == '\n')
+            n--;
+        if (n > 0 && line[n - 1] == '\r')
+            n--;
         status = wc_request_json_at(&out, &outlen, line, (size_t) n, name,
                                     lineno, err);
         if (out == NULL)

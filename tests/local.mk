@@ -59,7 +59,8 @@ SH_TESTS = \
 	tests/cli-draw.sh \
 	tests/cli-report.sh \
 	tests/dist-files.sh \
-	tests/completion.sh
+	tests/completion.sh \
+	tests/cli-batch.sh
 TESTS += $(C_TESTS) $(SH_TESTS)
 TEST_EXTENSIONS = .sh
 SH_LOG_COMPILER = $(SHELL)
