@@ -33,7 +33,8 @@ C_TESTS = \
 	tests/t-refplan \
 	tests/t-plan \
 	tests/t-plansound \
-	tests/t-draw
+	tests/t-draw \
+	tests/t-request
 check_PROGRAMS += $(C_TESTS) tests/corpus-check
 LDADD = $(TEST_LIBS)
 tests_corpus_check_LDADD = lib/libwc.la
