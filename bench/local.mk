@@ -16,10 +16,14 @@ bench_bench_plan_LDADD = lib/libwc.la
 bench_bench_cert_SOURCES = bench/bench-cert.c bench/benchutil.c
 bench_bench_cert_LDADD = lib/libwc.la
 noinst_HEADERS += bench/benchutil.h
+# One batch process against one process per cone (a script: it times the
+# program itself).
+EXTRA_DIST += bench/bench-batch.sh
 BENCH = bench/bench-cone$(EXEEXT) bench/bench-modes$(EXEEXT) \
 	bench/bench-double$(EXEEXT) bench/bench-stability$(EXEEXT) \
 	bench/bench-plan$(EXEEXT) bench/bench-cert$(EXEEXT)
-bench: $(BENCH)
+bench: $(BENCH) src/wrenchcone$(EXEEXT)
 	for b in $(BENCH); do ./$$b || exit 1; done
+	$(SHELL) $(srcdir)/bench/bench-batch.sh src/wrenchcone$(EXEEXT) $(srcdir)/data
 .PHONY: bench
 CLEANFILES += $(EXTRA_PROGRAMS)
