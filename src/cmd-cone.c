@@ -111,24 +111,11 @@ parse(cone_options * o, const cli_command * self, int argc, char ** argv)
 }
 
 /* --method=paper --arith=double: the float baseline, printed by
-   floatcone.c (JSON: cli_run_json).  */
-static int
-cone_double(cli_format fmt, const char * path, const char * mode)
+   fconeprint.c.  */
+static void
+print_double(cli_format fmt, const char * mode, const wc_fcone_t W)
 {
-    wc_problem_t P;
-    wc_error_t err;
-    wc_fcone_t W;
-    int status;
-
-    wc_problem_init(P);
-    wc_error_init(err);
-    wc_fcone_init(W, 3);
-    status = cli_load_problem(P, path, err);
-    if (status == WC_OK)
-        status = wc_wrench_cone_paper_double(W, P, mode, WC_FCONE_EPS, err);
-    if (status != WC_OK)
-        cli_report(err, status);
-    else if (fmt == FMT_TEXT)
+    if (fmt == FMT_TEXT)
     {
         printf("W(%s): wrench cone of mode %s\n", mode, mode);
         wc_fcone_fprint(stdout, W, WC_FCONE_TEXT);
@@ -139,12 +126,6 @@ cone_double(cli_format fmt, const char * path, const char * mode)
         wc_fcone_fprint(stdout, W, fmt == FMT_INE ? WC_FCONE_INE
                         : fmt == FMT_EXT ? WC_FCONE_EXT : WC_FCONE_CDD);
     }
-    if (status == WC_OK)
-        status = cli_finish_output();
-    wc_fcone_clear(W);
-    wc_error_clear(err);
-    wc_problem_clear(P);
-    return status;
 }
 
 /* Print the cone (and its trace) as text or cdd (JSON: cli_run_json);
@@ -202,15 +183,6 @@ request(_wc_request * R, const cone_options * o, const char * path,
 }
 
 static int
-json(const cone_options * o, const char * path, const char * mode)
-{
-    _wc_request R;
-
-    request(&R, o, path, mode);
-    return cli_run_json(&R);
-}
-
-static int
 all_modes(const cone_options * o, int argc, char ** argv)
 {
     _wc_request R;
@@ -233,10 +205,9 @@ cmd_cone(const cli_command * self, int argc, char ** argv)
     int status;
     const char * mode;
     char * title = NULL;
-    wc_problem_t P;
+    _wc_request R;
+    _wc_answer A;
     wc_error_t err;
-    wc_cone_t W;
-    wc_trace_t T;
 
     if ((status = parse(&o, self, argc, argv)) >= 0)
         return status;
@@ -251,34 +222,27 @@ cmd_cone(const cli_command * self, int argc, char ** argv)
                                ? "cone needs PROBLEM and MODE%s"
                                : "cone takes PROBLEM and MODE only%s", "");
     mode = argv[optind + 1];
+    request(&R, &o, argv[optind], mode);
     if (o.fmt == FMT_JSON)
-        return json(&o, argv[optind], mode);
-    if (o.arith_double)
-        return cone_double(o.fmt, argv[optind], mode);
-
-    wc_problem_init(P);
+        return cli_run_json(&R);
+    _wc_answer_init(&A);
     wc_error_init(err);
-    wc_cone_init(W, 3);
-    wc_trace_init(T);
-    status = cli_load_problem(P, argv[optind], err);
-    if (status == WC_OK)
-        status = wc_mode_check(P, mode, WC_TABLE_CONE, err);
-    if (status == WC_OK)
-        status = wc_wrench_cone(W, o.trace ? T : NULL, P, mode, o.method, err);
-    if (status == WC_OK && o.fmt != FMT_TEXT
+    status = _wc_run(&A, &R, err);
+    if (status == WC_OK && !o.arith_double && o.fmt != FMT_TEXT
         && (title = cdd_title(mode)) == NULL)
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
     if (status != WC_OK)
         cli_report(err, status);
     else
     {
-        print_cone(&o, mode, W, T, title);
+        if (o.arith_double)
+            print_double(o.fmt, mode, A.F);
+        else
+            print_cone(&o, mode, A.W, A.T, title);
         status = cli_finish_output();
     }
     free(title);
-    wc_trace_clear(T);
-    wc_cone_clear(W);
     wc_error_clear(err);
-    wc_problem_clear(P);
+    _wc_answer_clear(&A);
     return status;
 }
