@@ -111,12 +111,10 @@ int
 cmd_classify(const cli_command * self, int argc, char ** argv)
 {
     classify_options o;
-    int status;
-    wc_problem_t P;
+    int status, k;
+    _wc_request R;
+    _wc_answer A;
     wc_error_t err;
-    wc_classify_t R;
-    fmpq g[3];
-    slong k;
 
     if ((status = parse(&o, self, argc, argv)) >= 0)
         return status;
@@ -124,46 +122,33 @@ cmd_classify(const cli_command * self, int argc, char ** argv)
         return cli_usage_error("classify", argc - optind < 4
                                ? "classify needs PROBLEM FX FY TAU%s"
                                : "classify takes PROBLEM FX FY TAU only%s", "");
-    if (o.fmt == FMT_JSON && o.certificate == NULL)
-    {
-        _wc_request R;
-
-        _wc_request_init(&R, _WC_CLASSIFY);
-        cli_input(&R.problem, argv[optind]);
-        R.nwrench = 3;
-        for (k = 0; k < 3; k++)
-            R.wrench[k] = argv[optind + 1 + k];
-        R.max_modes = o.max_modes;
-        return cli_run_json(&R);
-    }
-    wc_problem_init(P);
-    wc_error_init(err);
-    wc_classify_init(R);
+    _wc_request_init(&R, _WC_CLASSIFY);
+    cli_input(&R.problem, argv[optind]);
+    R.nwrench = 3;
     for (k = 0; k < 3; k++)
-        fmpq_init(g + k);
-    status = cli_load_problem(P, argv[optind], err);
-    if (status == WC_OK)
-        status = cli_parse_numbers(g, argv + optind + 1, 3, "<wrench>", err);
-    if (status == WC_OK)
-        status = wc_classify(R, P, g, o.certificate != NULL, o.max_modes,
-                             err);
+        R.wrench[k] = argv[optind + 1 + k];
+    R.max_modes = o.max_modes;
+    R.certificates = o.certificate != NULL;
+    _wc_answer_init(&A);
+    wc_error_init(err);
+    status = _wc_run(&A, &R, err);
     if (status != WC_OK)
         cli_report(err, status);
     else if (o.certificate != NULL)
     {
-        cert_job j = { P, R };
+        cert_job j = { A.P, A.K };
 
         status = cli_write_certificate(o.certificate, put_certificate, &j);
     }
     if (status == WC_OK)
     {
-        wc_classify_fprint(stdout, R, o.fmt == FMT_JSON);
+        if (o.fmt == FMT_JSON)
+            _wc_answer_fprint_json(stdout, &A);
+        else
+            wc_classify_fprint(stdout, A.K, 0);
         status = cli_finish_output();
     }
-    for (k = 0; k < 3; k++)
-        fmpq_clear(g + k);
-    wc_classify_clear(R);
     wc_error_clear(err);
-    wc_problem_clear(P);
+    _wc_answer_clear(&A);
     return status;
 }

@@ -73,45 +73,15 @@ parse(double * tol, int * json, const cli_command * self, int argc,
     return c == CLI_EXIT ? p.status : -1;
 }
 
-/* The exact cone of mode, read and compared with the cone in fpath.  */
-static int
-compute(wc_comparison_t R, wc_cone_t W, const char * ppath,
-        const char * mode, const char * fpath, double tol, wc_error_t err)
-{
-    wc_problem_t P;
-    wc_foreign_t F;
-    char * text = NULL;
-    size_t len = 0;
-    int status;
-
-    wc_problem_init(P);
-    wc_foreign_init(F);
-    status = cli_load_problem(P, ppath, err);
-    if (status == WC_OK)
-        status = wc_mode_check(P, mode, WC_TABLE_CONE, err);
-    if (status == WC_OK)
-        status = cli_read_all(&text, &len, fpath, CLI_MAX_PROBLEM_BYTES, err);
-    if (status == WC_OK)
-        status = wc_foreign_parse(F, text, len, cli_input_name(fpath), err);
-    if (status == WC_OK)
-        status = wc_wrench_cone(W, NULL, P, mode, WC_METHOD_DIRECT, err);
-    if (status == WC_OK)
-        status = wc_compare(R, W, mode, F, tol, err);
-    free(text);
-    wc_foreign_clear(F);
-    wc_problem_clear(P);
-    return status;
-}
-
 int
 cmd_compare(const cli_command * self, int argc, char ** argv)
 {
     double tol = WC_COMPARE_TOL;
     int json = 0, status;
     const char * ppath, * mode, * fpath;
+    _wc_request R;
+    _wc_answer A;
     wc_error_t err;
-    wc_cone_t W;
-    wc_comparison_t R;
 
     if ((status = parse(&tol, &json, self, argc, argv)) >= 0)
         return status;
@@ -126,33 +96,27 @@ cmd_compare(const cli_command * self, int argc, char ** argv)
     if (strcmp(ppath, "-") == 0 && strcmp(fpath, "-") == 0)
         return cli_usage_error("compare", "PROBLEM and FILE cannot both be "
                                "standard input%s", "");
+    _wc_request_init(&R, _WC_COMPARE);
+    cli_input(&R.problem, ppath);
+    R.mode = mode;
+    cli_input(&R.foreign, fpath);
+    R.tol = tol;
     if (json)
-    {
-        _wc_request Q;
-
-        _wc_request_init(&Q, _WC_COMPARE);
-        cli_input(&Q.problem, ppath);
-        Q.mode = mode;
-        cli_input(&Q.foreign, fpath);
-        Q.tol = tol;
-        return cli_run_json(&Q);
-    }
+        return cli_run_json(&R);
+    _wc_answer_init(&A);
     wc_error_init(err);
-    wc_cone_init(W, 3);
-    wc_comparison_init(R);
-    status = compute(R, W, ppath, mode, fpath, tol, err);
+    status = _wc_run(&A, &R, err);
     if (status != WC_OK)
         cli_report(err, status);
     else
     {
-        wc_comparison_fprint(stdout, R, W, cli_input_name(ppath), mode,
-                             cli_input_name(fpath), json);
+        wc_comparison_fprint(stdout, A.cmp, A.W, R.problem.name, mode,
+                             R.foreign.name, 0);
         status = cli_finish_output();
-        if (status == WC_OK && R->differs != 0)
-            status = WC_EDISAGREE;
+        if (status == WC_OK)
+            status = _wc_answer_status(&A);
     }
-    wc_comparison_clear(R);
-    wc_cone_clear(W);
     wc_error_clear(err);
+    _wc_answer_clear(&A);
     return status;
 }

@@ -54,9 +54,9 @@ cmd_feasible(const cli_command * self, int argc, char ** argv)
     cli_format fmt = FMT_TEXT;
     const char * certificate = NULL;
     int c, status;
-    wc_problem_t P;
+    _wc_request R;
+    _wc_answer A;
     wc_error_t err;
-    wc_certificate_t C;
 
     cli_options_init(&p, self);
     while ((c = cli_option(&p, argc, argv)) >= 0)
@@ -70,36 +70,30 @@ cmd_feasible(const cli_command * self, int argc, char ** argv)
         return cli_usage_error("feasible", argc - optind < 2
                                ? "feasible needs PROBLEM and MODE%s"
                                : "feasible takes PROBLEM and MODE only%s", "");
-    if (fmt == FMT_JSON && certificate == NULL)
-    {
-        _wc_request R;
-
-        _wc_request_init(&R, _WC_FEASIBLE);
-        cli_input(&R.problem, argv[optind]);
-        R.mode = argv[optind + 1];
-        return cli_run_json(&R);
-    }
-    wc_problem_init(P);
+    _wc_request_init(&R, _WC_FEASIBLE);
+    cli_input(&R.problem, argv[optind]);
+    R.mode = argv[optind + 1];
+    _wc_answer_init(&A);
     wc_error_init(err);
-    wc_certificate_init(C);
-    status = cli_load_problem(P, argv[optind], err);
-    if (status == WC_OK)
-        status = wc_feasible(C, P, argv[optind + 1], err);
+    status = _wc_run(&A, &R, err);
     if (status != WC_OK)
         cli_report(err, status);
     else if (certificate != NULL)
     {
-        cert_job j = { P, C };
+        cert_job j = { A.P, A.C };
 
         status = cli_write_certificate(certificate, put_certificate, &j);
     }
     if (status == WC_OK)
     {
-        wc_certificate_fprint(stdout, C, P, fmt == FMT_JSON);
+        /* JSON: the certificate itself, as batch prints it.  */
+        if (fmt == FMT_JSON)
+            _wc_answer_fprint_json(stdout, &A);
+        else
+            wc_certificate_fprint(stdout, A.C, A.P, 0);
         status = cli_finish_output();
     }
-    wc_certificate_clear(C);
     wc_error_clear(err);
-    wc_problem_clear(P);
+    _wc_answer_clear(&A);
     return status;
 }

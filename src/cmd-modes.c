@@ -38,9 +38,9 @@ cmd_modes(const cli_command * self, int argc, char ** argv)
     cli_options p;
     cli_format fmt = FMT_TEXT;
     int c, status, witness = 0;
-    wc_problem_t P;
+    _wc_request R;
+    _wc_answer A;
     wc_error_t err;
-    wc_modes_t M;
 
     cli_options_init(&p, self);
     while ((c = cli_option(&p, argc, argv)) >= 0)
@@ -54,30 +54,22 @@ cmd_modes(const cli_command * self, int argc, char ** argv)
         return cli_usage_error("modes", argc - optind < 1
                                ? "modes needs PROBLEM%s"
                                : "modes takes PROBLEM only%s", "");
+    _wc_request_init(&R, _WC_MODES);
+    cli_input(&R.problem, argv[optind]);
+    R.witness = witness;
     if (fmt == FMT_JSON)
-    {
-        _wc_request R;
-
-        _wc_request_init(&R, _WC_MODES);
-        cli_input(&R.problem, argv[optind]);
-        R.witness = witness;
         return cli_run_json(&R);
-    }
-    wc_problem_init(P);
+    _wc_answer_init(&A);
     wc_error_init(err);
-    wc_modes_init(M);
-    status = cli_load_problem(P, argv[optind], err);
-    if (status == WC_OK)
-        status = wc_modes_enumerate(M, P, err);
+    status = _wc_run(&A, &R, err);
     if (status != WC_OK)
         cli_report(err, status);
     else
     {
-        wc_modes_fprint(stdout, M, fmt == FMT_JSON, witness);
+        wc_modes_fprint(stdout, A.M, 0, witness);
         status = cli_finish_output();
     }
-    wc_modes_clear(M);
     wc_error_clear(err);
-    wc_problem_clear(P);
+    _wc_answer_clear(&A);
     return status;
 }

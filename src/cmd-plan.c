@@ -65,14 +65,11 @@ cmd_plan(const cli_command * self, int argc, char ** argv)
 {
     cli_options p;
     cli_format fmt = FMT_TEXT;
-    int c, status, with_wrench, complete = 0;
+    int c, k, status, with_wrench, complete = 0;
     const char * certificate = NULL;
-    wc_problem_t P;
+    _wc_request R;
+    _wc_answer A;
     wc_error_t err;
-    wc_plan_t R;
-    wc_plan_wrench_t W;
-    fmpq g[3];
-    slong k;
 
     cli_options_init(&p, self);
     while ((c = cli_option(&p, argc, argv)) >= 0)
@@ -93,36 +90,19 @@ cmd_plan(const cli_command * self, int argc, char ** argv)
     if (with_wrench && certificate != NULL)
         return cli_usage_error("plan", "--certificate certifies G_goal, "
                                "not one wrench: drop FX FY TAU%s", "");
-    if (fmt == FMT_JSON && certificate == NULL)
-    {
-        _wc_request R;
-
-        _wc_request_init(&R, _WC_PLAN);
-        cli_input(&R.problem, argv[optind]);
-        R.nwrench = with_wrench ? 3 : 0;
-        for (k = 0; k < R.nwrench; k++)
-            R.wrench[k] = argv[optind + 1 + k];
-        R.complete = complete;
-        return cli_run_json(&R);
-    }
-    wc_problem_init(P);
+    _wc_request_init(&R, _WC_PLAN);
+    cli_input(&R.problem, argv[optind]);
+    R.nwrench = with_wrench ? 3 : 0;
+    for (k = 0; k < R.nwrench; k++)
+        R.wrench[k] = argv[optind + 1 + k];
+    R.complete = complete;
+    R.certificates = certificate != NULL;
+    _wc_answer_init(&A);
     wc_error_init(err);
-    wc_plan_init(R);
-    wc_plan_wrench_init(W);
-    for (k = 0; k < 3; k++)
-        fmpq_init(g + k);
-    status = cli_load_problem(P, argv[optind], err);
-    if (status == WC_OK && certificate != NULL)
-        status = wc_problem_check_fixels(P, WC_PLAN_CERT_MAX_FIXELS, 0,
-                                         "a plan certificate", err);
-    if (status == WC_OK && with_wrench)
-        status = cli_parse_numbers(g, argv + optind + 1, 3, "<wrench>", err);
-    if (status == WC_OK)
-        status = with_wrench ? wc_plan_wrench(W, P, g, complete, err)
-            : wc_plan(R, P, complete, err);
+    status = _wc_run(&A, &R, err);
     if (status == WC_OK && certificate != NULL)
     {
-        cert_job j = { P, R, err };
+        cert_job j = { A.P, A.plan, err };
 
         status = cli_write_certificate(certificate, put_certificate, &j);
         if (status != WC_OK && err->message == NULL)
@@ -134,17 +114,15 @@ cmd_plan(const cli_command * self, int argc, char ** argv)
         cli_report(err, status);
     else
     {
-        if (with_wrench)
-            wc_plan_wrench_fprint(stdout, W, fmt == FMT_JSON);
+        if (fmt == FMT_JSON)
+            _wc_answer_fprint_json(stdout, &A);
+        else if (with_wrench)
+            wc_plan_wrench_fprint(stdout, A.pw, 0);
         else
-            wc_plan_fprint(stdout, R, P, fmt == FMT_JSON);
+            wc_plan_fprint(stdout, A.plan, A.P, 0);
         status = cli_finish_output();
     }
-    for (k = 0; k < 3; k++)
-        fmpq_clear(g + k);
-    wc_plan_wrench_clear(W);
-    wc_plan_clear(R);
     wc_error_clear(err);
-    wc_problem_clear(P);
+    _wc_answer_clear(&A);
     return status;
 }

@@ -45,97 +45,9 @@ const struct option cmd_stability_options[] = {
     { NULL, 0, NULL, 0 }
 };
 
-/* The answer: the sets, and the robustness of the biasing wrench b in
-   both strong sets (exact, then paper).  */
-typedef struct
-{
-    wc_stability_t S;
-    int biased;
-    fmpq b[3];
-    fmpq_t L;
-    fmpq_t rho[2];
-    int closed[2], infinite[2], in_set[2];
-}
-answer;
-
+/* The robustness of the bias, as text (JSON: the request layer).  */
 static void
-answer_init(answer * a)
-{
-    int i;
-
-    wc_stability_init(a->S);
-    a->biased = 0;
-    for (i = 0; i < 3; i++)
-        fmpq_init(a->b + i);
-    fmpq_init(a->L);
-    fmpq_one(a->L);
-    for (i = 0; i < 2; i++)
-        fmpq_init(a->rho[i]);
-}
-
-static void
-answer_clear(answer * a)
-{
-    int i;
-
-    for (i = 0; i < 2; i++)
-        fmpq_clear(a->rho[i]);
-    fmpq_clear(a->L);
-    for (i = 0; i < 3; i++)
-        fmpq_clear(a->b + i);
-    wc_stability_clear(a->S);
-}
-
-/* Both robustness figures, before anything is printed.  */
-static int
-robustness(answer * a, wc_error_t err)
-{
-    const wc_set_struct * sets[2] = { a->S->strong, a->S->strong_paper };
-    int i, status = WC_OK;
-
-    for (i = 0; i < 2 && status == WC_OK; i++)
-    {
-        status = wc_robustness(a->rho[i], a->closed + i, a->infinite + i,
-                               sets[i], a->S->cells, a->b, a->L, err);
-        a->in_set[i] = wc_set_contains(sets[i], a->b);
-    }
-    return status;
-}
-
-static void
-print_bias_json(const answer * a)
-{
-    int i;
-
-    fputs(", \"bias\": {\"wrench\": [", stdout);
-    for (i = 0; i < 3; i++)
-    {
-        fputs(i ? ", \"" : "\"", stdout);
-        wc_fprint_fmpq(stdout, a->b + i);
-        putchar('"');
-    }
-    fputs("], \"length\": \"", stdout);
-    wc_fprint_fmpq(stdout, a->L);
-    putchar('"');
-    for (i = 0; i < 2; i++)
-    {
-        fprintf(stdout, ", \"%s\": {\"in_set\": %s, ", i == 0 ? "strong"
-                : "strong_paper", a->in_set[i] ? "true" : "false");
-        if (a->infinite[i])
-            fputs("\"rho\": null, \"unbounded\": true}", stdout);
-        else
-        {
-            fputs("\"rho\": \"", stdout);
-            wc_fprint_fmpq(stdout, a->rho[i]);
-            fprintf(stdout, "\", \"closed\": %s}",
-                    a->closed[i] ? "true" : "false");
-        }
-    }
-    putchar('}');
-}
-
-static void
-print_bias_text(const answer * a)
+print_bias_text(const _wc_answer * a)
 {
     const char * names[2] = { "exact", "paper" };
     int i;
@@ -188,8 +100,6 @@ split_bias(char * bias[3], char ** copy, const char * value)
     return k == 3 && strchr(bias[2], ',') == NULL;
 }
 
-/* The whole answer: the problem, --bias and --length read, the sets and
-   the robustness computed.  */
 typedef struct
 {
     const wc_problem_struct * P;
@@ -204,41 +114,6 @@ put_certificate(FILE * f, const void * p)
     const cert_job * j = p;
 
     return wc_stability_certificate_fprint(f, j->P, j->S, j->err);
-}
-
-static int
-compute(answer * a, const char * path, char ** bias, const char * length,
-        const char * certificate, wc_error_t err)
-{
-    wc_problem_t P;
-    int status;
-
-    wc_problem_init(P);
-    status = cli_load_problem(P, path, err);
-    if (status == WC_OK && a->biased)
-        status = cli_parse_numbers(a->b, bias, 3, "<bias>", err);
-    if (status == WC_OK && length != NULL)
-    {
-        status = cli_parse_numbers(a->L, (char **) &length, 1, "<length>",
-                                   err);
-        if (status == WC_OK && fmpq_sgn(a->L) <= 0)
-            status = wc_error_set(err, WC_EINPUT, "<length>", 1, 1,
-                                  "the length must be positive");
-    }
-    if (status == WC_OK)
-        status = wc_stability(a->S, P, err);
-    if (status == WC_OK && a->biased)
-        status = robustness(a, err);
-    if (status == WC_OK && certificate != NULL)
-    {
-        cert_job j = { P, a->S, err };
-
-        status = cli_write_certificate(certificate, put_certificate, &j);
-        if (status != WC_OK && err->message == NULL)
-            status = -status;       /* reported already */
-    }
-    wc_problem_clear(P);
-    return status;
 }
 
 /* -1 to go on, or the exit status.  */
@@ -270,8 +145,9 @@ cmd_stability(const cli_command * self, int argc, char ** argv)
     const char * bias = NULL, * length = NULL, * certificate = NULL;
     char * values[3] = { NULL, NULL, NULL }, * copy = NULL;
     int status, split = 1;
+    _wc_request R;
+    _wc_answer A;
     wc_error_t err;
-    answer a;
 
     if ((status = parse(&fmt, &bias, &length, &certificate, self, argc,
                         argv)) >= 0)
@@ -291,40 +167,40 @@ cmd_stability(const cli_command * self, int argc, char ** argv)
         return cli_usage_error("stability", "--bias takes three numbers "
                                "FX,FY,TAU, not '%s'", bias);
     }
-    if (fmt == FMT_JSON && certificate == NULL)
-    {
-        _wc_request R;
-
-        _wc_request_init(&R, _WC_STABILITY);
-        cli_input(&R.problem, argv[optind]);
-        R.biased = bias != NULL;
-        memcpy(R.bias, values, sizeof values);
-        R.length = length;
-        status = cli_run_json(&R);
-        free(copy);
-        return status;
-    }
+    _wc_request_init(&R, _WC_STABILITY);
+    cli_input(&R.problem, argv[optind]);
+    R.biased = bias != NULL;
+    memcpy(R.bias, values, sizeof values);
+    R.length = length;
+    _wc_answer_init(&A);
     wc_error_init(err);
-    answer_init(&a);
-    a.biased = bias != NULL;
-    status = compute(&a, argv[optind], values, length, certificate, err);
+    status = _wc_run(&A, &R, err);
+    if (status == WC_OK && certificate != NULL)
+    {
+        cert_job j = { A.P, A.S, err };
+
+        status = cli_write_certificate(certificate, put_certificate, &j);
+        if (status != WC_OK && err->message == NULL)
+            status = -status;       /* reported already */
+    }
     if (status < 0)
         status = -status;
     else if (status != WC_OK)
         cli_report(err, status);
     else
     {
-        wc_stability_fprint(stdout, a.S, fmt == FMT_JSON ? 2 : 0);
-        if (a.biased && fmt == FMT_JSON)
-            print_bias_json(&a);
-        else if (a.biased)
-            print_bias_text(&a);
         if (fmt == FMT_JSON)
-            fputs("}\n", stdout);
+            _wc_answer_fprint_json(stdout, &A);
+        else
+        {
+            wc_stability_fprint(stdout, A.S, 0);
+            if (R.biased)
+                print_bias_text(&A);
+        }
         status = cli_finish_output();
     }
-    answer_clear(&a);
     wc_error_clear(err);
+    _wc_answer_clear(&A);
     free(copy);
     return status;
 }
