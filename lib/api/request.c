@@ -234,14 +234,13 @@ static int
 read_max_modes(_wc_request * R, const wc_json_node * o, const where * w)
 {
     const wc_json_node * v = _wc_json_object_get(o, "max_modes");
-    char * end;
 
     if (v == NULL)
         return WC_OK;
     if (v->type == WC_JSON_NUMBER && v->text[0] != '-'
         && strspn(v->text, "0123456789") == v->len && v->len <= 9)
     {
-        R->max_modes = strtol(v->text, &end, 10);
+        R->max_modes = strtol(v->text, NULL, 10);
         return WC_OK;
     }
     return bad(w, v, "\"max_modes\" takes a count >= 0 (0: no limit)");
@@ -272,7 +271,7 @@ static int
 read_options(_wc_request * R, const wc_json_node * o, const where * w)
 {
     const wc_json_node * v;
-    int status = WC_OK;
+    int n, status = WC_OK;
 
     if (R->command == _WC_CONE || R->command == _WC_FEASIBLE
         || R->command == _WC_COMPARE)
@@ -296,8 +295,8 @@ read_options(_wc_request * R, const wc_json_node * o, const where * w)
             return bad(w, NULL, "a classify request needs \"wrench\"");
         return status == WC_OK ? read_max_modes(R, o, w) : status;
     case _WC_STABILITY:
-        status = get_wrench(R->bias, &R->biased, o, "bias", w);
-        R->biased = R->biased != 0;
+        status = get_wrench(R->bias, &n, o, "bias", w);
+        R->biased = n == 3;
         if (status == WC_OK && (v = _wc_json_object_get(o, "length")) != NULL)
             status = number_text(&R->length, v, "length", w);
         return status;
