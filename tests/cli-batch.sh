@@ -7,10 +7,10 @@
 # on the data/ problems and a sample of the corpus stability, with a bias,
 # and plan, with a wrench) answers line for line exactly what the single
 # commands print with --format=json, errors included; --all-modes prints
-# the same lines as one cone per mode; malformed lines, unknown or
-# ill-typed keys and missing files give the located error line and the
-# batch goes on; the exit status is the largest line's; an empty input
-# gives nothing and status 0.
+# the same lines as one cone per mode, and refuses a problem of over
+# 10000 modes; malformed lines, unknown or ill-typed keys and missing
+# files give the located error line and the batch goes on; the exit
+# status is the largest line's; an empty input gives nothing and status 0.
 #
 # Copyright (C) 2026 the wrenchcone authors.
 # This file is part of wrenchcone, free software under the GNU General
@@ -165,6 +165,17 @@ done
 [ $? -eq 2 ] && [ ! -s "$tmp/out" ] || fail "--all-modes with a MODE: not a usage error"
 "$W" cone --all-modes tests/bad/bad-number.wc > "$tmp/out" 2> "$tmp/err"
 [ $? -eq 1 ] && [ ! -s "$tmp/out" ] || fail "--all-modes on a bad problem: not status 1 with nothing on stdout"
+
+# More modes than --all-modes computes: refused before any cone, with
+# the count (120 near fixels in general enough position: 13732 modes).
+awk 'BEGIN { print "mass 1\ninertia 1\ncom 0 0\nfriction 1/5"
+    for (k = 1; k <= 120; k++)
+        printf "fixel %d %d normal %d %d near\n", k, k * k + 3, k % 7 - 3, k % 5 + 1 }' > "$tmp/many.wc"
+"$W" cone --all-modes "$tmp/many.wc" > "$tmp/out" 2> "$tmp/err"
+st=$?
+[ $st -eq 1 ] && [ ! -s "$tmp/out" ] || fail "--all-modes over the limit: status $st"
+[ "$(cat "$tmp/err")" = "wrenchcone: $tmp/many.wc: 13732 modes, over the 10000 that --all-modes computes: list them with 'modes' and give them to 'batch'" ] \
+    || fail "--all-modes over the limit: $(cat "$tmp/err")"
 
 # Malformed lines: an error line each, located in the batch file, and
 # the batch goes on.
