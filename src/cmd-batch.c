@@ -23,8 +23,10 @@ const char cmd_batch_usage[] =
     "Each answer is one line, in the order of the requests: exactly what the\n"
     "command prints with --format=json, or {\"error\": {\"message\", \"file\",\n"
     "\"line\", \"column\", \"status\"}} and the batch goes on.  Blank lines are\n"
-    "skipped.  Commands: cone, modes, feasible, classify, stability, plan,\n"
-    "compare; the keys of each are in wrenchcone(1), REQUESTS.\n"
+    "skipped.  Each answer is written as soon as it is computed, so a program\n"
+    "can send one request and read its answer through pipes.  Commands: cone,\n"
+    "modes, feasible, classify, stability, plan, compare; the keys of each are\n"
+    "in wrenchcone(1), REQUESTS.\n"
     "\n"
     "Exit status: 0 when every request succeeded, else the largest status of\n"
     "a line (1 bad input, 2 bad request, 3 internal, 4 a comparison beyond\n"
@@ -74,6 +76,11 @@ answer_lines(FILE * f, const char * name)
         out = NULL;
         if (status > worst)
             worst = status;
+        /* Each answer leaves at once, so that a program can drive the
+           batch through pipes, one request and its answer at a time; a
+           failed write ends the batch (cmd_batch reports it).  */
+        if (fflush(stdout) != 0)
+            break;
     }
     if (ferror(f))
     {
