@@ -78,7 +78,10 @@ typedef struct
     int arith_double;           /* cone: --arith=double (with paper) */
     int witness;                /* modes */
     long max_modes;             /* classify: 0 is no limit */
-    int certificates;           /* classify: compute certificates too */
+    int certificates;           /* the command line's --certificate:
+                                   classify computes the certificates'
+                                   data, plan checks the fixel limit of
+                                   a plan certificate first */
     int complete;               /* plan */
     int nwrench;                /* classify 3; plan 0 or 3 */
     const char * wrench[3];
