@@ -21,6 +21,7 @@
 #include <gmp.h>
 
 #include "cli-base.h"
+#include "core/readall.h"
 
 void
 cli_out_of_memory(void)
@@ -88,52 +89,6 @@ cli_input_name(const char * path)
     return strcmp(path, "-") == 0 ? "<stdin>" : path;
 }
 
-/* Read the whole of f into a malloc'd buffer, at most max bytes.  */
-static int
-read_stream(char ** text, size_t * len, FILE * f, const char * path,
-            size_t max, wc_error_t err)
-{
-    size_t alloc = 4096, n = 0, r;
-    char * buf = malloc(alloc);
-    int status = WC_OK;
-
-    while (buf != NULL && (r = fread(buf + n, 1, alloc - n, f)) > 0)
-    {
-        n += r;
-        if (n > max)
-        {
-            status = wc_error_set(err, WC_EINPUT, path, 0, 0,
-                                  "file too large (over %lu bytes)",
-                                  (unsigned long) max);
-            break;
-        }
-        if (n == alloc)
-        {
-            char * p = realloc(buf, alloc *= 2);
-
-            if (p == NULL)
-                free(buf);
-            buf = p;
-        }
-    }
-    if (status != WC_OK)
-        ;
-    else if (buf == NULL)
-        status = wc_error_set(err, WC_EINTERNAL, path, 0, 0, "out of memory");
-    else if (ferror(f))
-        /* A directory is a wrong argument; anything else is an I/O
-           failure.  */
-        status = wc_error_set(err, errno == EISDIR ? WC_EINPUT : WC_EINTERNAL,
-                              path, 0, 0, "read error: %s", strerror(errno));
-    if (status != WC_OK)
-    {
-        free(buf);
-        return status;
-    }
-    *text = buf;
-    *len = n;
-    return WC_OK;
-}
 
 /* path "-" is stdin.  */
 int
@@ -146,7 +101,7 @@ cli_read_all(char ** text, size_t * len, const char * path, size_t max,
     if (f == NULL)
         return wc_error_set(err, WC_EINPUT, path, 0, 0, "cannot open: %s",
                             strerror(errno));
-    status = read_stream(text, len, f, cli_input_name(path), max, err);
+    status = _wc_read_all(text, len, f, cli_input_name(path), max, err);
     if (f != stdin)
         fclose(f);
     return status;

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "api/run.h"
+#include "core/readall.h"
 #include "io/print.h"
 #include "io/fconeprint.h"
 #include "io/compareprint.h"
@@ -105,52 +106,6 @@ _wc_answer_clear(_wc_answer * A)
 /* ------------------------------------------------------------------ */
 /* Inputs                                                              */
 
-/* Read the whole of f, at most max bytes; name locates the errors.  */
-static int
-read_stream(char ** text, size_t * len, FILE * f, const char * name,
-            size_t max, wc_error_t err)
-{
-    size_t alloc = 4096, n = 0, r;
-    char * buf = malloc(alloc);
-    int status = WC_OK;
-
-    while (buf != NULL && (r = fread(buf + n, 1, alloc - n, f)) > 0)
-    {
-        n += r;
-        if (n > max)
-        {
-            status = wc_error_set(err, WC_EINPUT, name, 0, 0,
-                                  "file too large (over %lu bytes)",
-                                  (unsigned long) max);
-            break;
-        }
-        if (n == alloc)
-        {
-            char * p = realloc(buf, alloc *= 2);
-
-            if (p == NULL)
-                free(buf);
-            buf = p;
-        }
-    }
-    if (status != WC_OK)
-        ;
-    else if (buf == NULL)
-        status = wc_error_set(err, WC_EINTERNAL, name, 0, 0, "out of memory");
-    else if (ferror(f))
-        /* A directory is a wrong argument; anything else is an I/O
-           failure.  */
-        status = wc_error_set(err, errno == EISDIR ? WC_EINPUT : WC_EINTERNAL,
-                              name, 0, 0, "read error: %s", strerror(errno));
-    if (status != WC_OK)
-    {
-        free(buf);
-        return status;
-    }
-    *text = buf;
-    *len = n;
-    return WC_OK;
-}
 
 int
 _wc_input_read(char ** text, size_t * len, const _wc_input * in,
@@ -162,7 +117,7 @@ _wc_input_read(char ** text, size_t * len, const _wc_input * in,
     *text = NULL;
     *len = 0;
     if (in->stream != NULL)
-        return read_stream(text, len, in->stream, in->name,
+        return _wc_read_all(text, len, in->stream, in->name,
                            _WC_MAX_INPUT_BYTES, err);
     if (in->text != NULL)
     {
@@ -180,7 +135,7 @@ _wc_input_read(char ** text, size_t * len, const _wc_input * in,
     if ((f = fopen(in->path, "rb")) == NULL)
         return wc_error_set(err, WC_EINPUT, in->path, 0, 0, "cannot open: %s",
                             strerror(errno));
-    status = read_stream(text, len, f, in->name, _WC_MAX_INPUT_BYTES, err);
+    status = _wc_read_all(text, len, f, in->name, _WC_MAX_INPUT_BYTES, err);
     fclose(f);
     return status;
 }

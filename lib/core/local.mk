@@ -1,12 +1,13 @@
 # lib/core -- errors, the problem and its reader, numbers, JSON reading,
 # reproducible random problems, versions, the progress hook.
 
-# error.c, text.c, json.c and jsontree.c are the certificate checker's
+# error.c, text.c, readall.c, json.c and jsontree.c are the certificate checker's
 # too: they go into lib/libwccheck.la (lib/check/local.mk), which
 # lib/libwc.la includes.
 lib_libwccheck_la_SOURCES += \
 	lib/core/error.c \
 	lib/core/text.c \
+	lib/core/readall.c \
 	lib/core/json.c \
 	lib/core/jsontree.c
 lib_libwc_la_SOURCES += \
@@ -32,6 +33,7 @@ wccore_HEADERS = \
 noinst_HEADERS += \
 	lib/core/json.h \
 	lib/core/text.h \
+	lib/core/readall.h \
 	lib/core/polygon.h \
 	lib/core/lexer.h \
 	lib/core/randgen.h \
