@@ -51,14 +51,10 @@ cli_usage_error(const char * cmd, const char * fmt, const char * arg)
 int
 cli_load_problem(wc_problem_t P, const char * path, wc_error_t err)
 {
-    char * text = NULL;
-    size_t len = 0;
-    int status = cli_read_all(&text, &len, path, CLI_MAX_PROBLEM_BYTES, err);
+    _wc_input in;
 
-    if (status == WC_OK)
-        status = wc_problem_parse(P, text, len, cli_input_name(path), err);
-    free(text);
-    return status;
+    cli_input(&in, path);
+    return _wc_load_problem(P, &in, err);
 }
 
 int
@@ -83,29 +79,6 @@ cli_parse_format(cli_format * f, const char * s, const char * cmd,
         return 0;
     }
     return 1;
-}
-
-int
-cli_parse_numbers(fmpq * v, char ** args, slong k, const char * what,
-                  wc_error_t err)
-{
-    slong i, col = 1;
-
-    for (i = 0; i < k; i++)
-    {
-        if (wc_parse_number_bounded(v + i, args[i], strlen(args[i]), err)
-            != WC_OK)
-        {
-            char * why = wc_error_format(err);
-            int st = wc_error_set(err, WC_EINPUT, what, 1, col, "%s",
-                                  why != NULL ? why : "bad number");
-
-            free(why);
-            return st;
-        }
-        col += strlen(args[i]) + 1;
-    }
-    return WC_OK;
 }
 
 /* Only a file this run created is ever removed -- never a device or

@@ -55,7 +55,6 @@ extern const cli_command cli_commands[];
 /* Inputs larger than these are refused before they are parsed: a problem
    of a million fixels is far below the first, and a certificate carries
    at most two rows per fixel.  */
-#define CLI_MAX_PROBLEM_BYTES ((size_t) 256 << 20)
 #define CLI_MAX_CERTIFICATE_BYTES ((size_t) 64 << 20)
 
 typedef enum { FMT_TEXT, FMT_JSON, FMT_CDD, FMT_INE, FMT_EXT } cli_format;
@@ -77,12 +76,6 @@ int cli_load_problem(wc_problem_t P, const char * path, wc_error_t err);
    allow_cdd), else 0 after a usage error for command cmd.  */
 int cli_parse_format(cli_format * f, const char * s, const char * cmd,
                      int allow_cdd);
-
-/* The exact numbers args[0..k) into v; a bad one is an input error in
-   "what" at its column in the operands joined by single spaces.  */
-int cli_parse_numbers(fmpq * v, char ** args, slong k, const char * what,
-                      wc_error_t err);
-
 
 /* Progress on stderr (cli-progress.c): cli_progress_force for
    --progress, cli_progress_start before a command runs (it installs the

@@ -130,7 +130,8 @@ parse_wrench(fmpq * g, const char * s, wc_error_t err)
         status = wc_error_set(err, WC_EINPUT, "<wrench>", 1, 1,
                               "a wrench is three numbers FX,FY,TAU");
     else
-        status = cli_parse_numbers(g, v, 3, "<wrench>", err);
+        status = _wc_parse_numbers(g, (const char * const *) v, 3,
+                                   "<wrench>", err);
     free(copy);
     return status;
 }

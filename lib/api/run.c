@@ -140,8 +140,8 @@ _wc_input_read(char ** text, size_t * len, const _wc_input * in,
     return status;
 }
 
-static int
-load_problem(wc_problem_t P, const _wc_input * in, wc_error_t err)
+int
+_wc_load_problem(wc_problem_t P, const _wc_input * in, wc_error_t err)
 {
     char * text = NULL;
     size_t len = 0;
@@ -153,12 +153,9 @@ load_problem(wc_problem_t P, const _wc_input * in, wc_error_t err)
     return status;
 }
 
-/* The numbers args[0..k) into v; a bad one is an input error in "what"
-   at its column in the arguments joined by single spaces (as the command
-   line reads its operands).  */
-static int
-parse_numbers(fmpq * v, const char * const * args, slong k,
-              const char * what, wc_error_t err)
+int
+_wc_parse_numbers(fmpq * v, const char * const * args, slong k,
+                  const char * what, wc_error_t err)
 {
     slong i, col = 1;
 
@@ -221,10 +218,10 @@ run_stability(_wc_answer * A, const _wc_request * R, wc_error_t err)
     int status = WC_OK;
 
     if (R->biased)
-        status = parse_numbers(A->b, R->bias, 3, "<bias>", err);
+        status = _wc_parse_numbers(A->b, R->bias, 3, "<bias>", err);
     if (status == WC_OK && R->length != NULL)
     {
-        status = parse_numbers(A->L, &R->length, 1, "<length>", err);
+        status = _wc_parse_numbers(A->L, &R->length, 1, "<length>", err);
         if (status == WC_OK && fmpq_sgn(A->L) <= 0)
             status = wc_error_set(err, WC_EINPUT, "<length>", 1, 1,
                                   "the length must be positive");
@@ -245,7 +242,7 @@ run_plan(_wc_answer * A, const _wc_request * R, wc_error_t err)
         status = wc_problem_check_fixels(A->P, WC_PLAN_CERT_MAX_FIXELS, 0,
                                          "a plan certificate", err);
     if (status == WC_OK && R->nwrench == 3)
-        status = parse_numbers(A->g, R->wrench, 3, "<wrench>", err);
+        status = _wc_parse_numbers(A->g, R->wrench, 3, "<wrench>", err);
     if (status == WC_OK)
         status = R->nwrench == 3
             ? wc_plan_wrench(A->pw, A->P, A->g, R->complete, err)
@@ -284,7 +281,7 @@ _wc_run(_wc_answer * A, const _wc_request * R, wc_error_t err)
 
     A->command = R->command;
     A->R = R;
-    status = load_problem(A->P, &R->problem, err);
+    status = _wc_load_problem(A->P, &R->problem, err);
     if (status != WC_OK)
         return status;
     switch (R->command)
@@ -296,7 +293,7 @@ _wc_run(_wc_answer * A, const _wc_request * R, wc_error_t err)
     case _WC_FEASIBLE:
         return wc_feasible(A->C, A->P, R->mode, err);
     case _WC_CLASSIFY:
-        status = parse_numbers(A->g, R->wrench, 3, "<wrench>", err);
+        status = _wc_parse_numbers(A->g, R->wrench, 3, "<wrench>", err);
         if (status == WC_OK)
             status = wc_classify(A->K, A->P, A->g, R->certificates,
                                  R->max_modes, err);
@@ -457,7 +454,7 @@ _wc_cone_all_modes(FILE * out, const _wc_request * R, wc_error_t err)
 
     wc_problem_init(P);
     wc_modes_init(M);
-    status = load_problem(P, &R->problem, err);
+    status = _wc_load_problem(P, &R->problem, err);
     if (status == WC_OK)
         status = wc_modes_enumerate(M, P, err);
     if (status == WC_OK && M->count > _WC_ALL_MODES_MAX)

@@ -150,6 +150,16 @@ int _wc_cone_all_modes(FILE * out, const _wc_request * R, wc_error_t err);
 int _wc_input_read(char ** text, size_t * len, const _wc_input * in,
                    wc_error_t err);
 
+/* The problem of an input, read (_wc_input_read) and parsed; errors are
+   located in in->name.  */
+int _wc_load_problem(wc_problem_t P, const _wc_input * in, wc_error_t err);
+
+/* The numbers args[0..k) into v; a bad one is an input error in "what"
+   at its column in the arguments joined by single spaces (as the command
+   line reads its operands): "<wrench>:1:COL".  */
+int _wc_parse_numbers(fmpq * v, const char * const * args, slong k,
+                      const char * what, wc_error_t err);
+
 /* An error record as one JSON line:
    {"error": {"message", "file", "line", "column", "status"}}, unknown
    parts null.  */
