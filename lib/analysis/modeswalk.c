@@ -42,6 +42,7 @@
 
 #include <config.h>
 
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -59,7 +60,14 @@
 #include "analysis/modeswalk.h"
 
 /* ---------------------------------------------------------------------
-   The set of modes found so far: open addressing on the mode strings.  */
+   The set of modes found so far.  Most faces inside K repeat a mode found
+   before, so the lookup must not read all n letters: a mode is keyed by
+   where it differs from a fixed string base (the letters once the signs
+   that are constant on K are set), and the walk keeps the current face's
+   difference set D and its hash (the exclusive or of a key per fixel and
+   letter) up to date one letter at a time.  A stored mode equals the
+   current letters iff it has as many differences as D and agrees with
+   them on D: a lookup costs O(|D|).  */
 
 typedef struct
 {
@@ -68,6 +76,8 @@ typedef struct
     slong count;
     slong * slot;
     char * letters;     /* count x (n + 1) */
+    uint64_t * hash;    /* count: of the differences from base */
+    slong * ndiff;      /* count: how many */
     fmpz_mat_t wit;     /* count x 3 */
     slong alloc;
 }
@@ -86,6 +96,8 @@ mode_set_init(mode_set * S, slong n)
     for (i = 0; i < S->size; i++)
         S->slot[i] = -1;
     S->letters = flint_malloc(S->alloc * (n + 1));
+    S->hash = flint_malloc(sizeof(uint64_t) * S->alloc);
+    S->ndiff = flint_malloc(sizeof(slong) * S->alloc);
     fmpz_mat_init(S->wit, S->alloc, 3);
 }
 
@@ -94,27 +106,61 @@ mode_set_clear(mode_set * S)
 {
     flint_free(S->slot);
     flint_free(S->letters);
+    flint_free(S->hash);
+    flint_free(S->ndiff);
     fmpz_mat_clear(S->wit);
 }
 
-/* The slot of mode s: holding it, or empty.  */
-static slong
-mode_set_find(const mode_set * S, const char * s)
+/* The key of letter c at fixel i.  */
+static uint64_t
+letter_key(slong i, char c)
 {
-    slong i = (slong) (_wc_hash_bytes((const unsigned char *) s, S->n)
-                       & (S->size - 1));
+    return _wc_hash_mix64(((uint64_t) i << 8) ^ (unsigned char) c
+                          ^ UINT64_C(0x9e3779b97f4a7c15));
+}
 
-    while (S->slot[i] >= 0
-           && memcmp(S->letters + S->slot[i] * (S->n + 1), s, S->n) != 0)
+/* The slot of the mode with hash h, nd differences from base at the
+   fixels diff[0 .. nd) where it reads cur: holding it, or empty.  */
+static slong
+mode_set_find(const mode_set * S, uint64_t h, slong nd, const slong * diff,
+              const char * cur)
+{
+    slong i = (slong) (h & (uint64_t) (S->size - 1)), j;
+
+    for (; S->slot[i] >= 0; i = (i + 1) & (S->size - 1))
+    {
+        slong m = S->slot[i];
+        const char * s = S->letters + m * (S->n + 1);
+
+        if (S->hash[m] != h || S->ndiff[m] != nd)
+            continue;
+        for (j = 0; j < nd && s[diff[j]] == cur[diff[j]]; j++)
+            ;
+        if (j == nd)
+            break;
+    }
+    return i;
+}
+
+/* The slot of stored mode m (present): by its number.  */
+static slong
+mode_set_slot_of(const mode_set * S, slong m)
+{
+    slong i = (slong) (S->hash[m] & (uint64_t) (S->size - 1));
+
+    while (S->slot[i] >= 0 && S->slot[i] != m)
         i = (i + 1) & (S->size - 1);
     return i;
 }
 
-/* Add s (known to be new) with witness w.  */
+/* Add s (known to be new) with witness w; base gives its key.  */
 static void
-mode_set_add(mode_set * S, const char * s, const fmpz * w)
+mode_set_add(mode_set * S, const char * s, const char * base,
+             const fmpz * w)
 {
-    slong i;
+    slong i, m = S->count;
+    uint64_t h = 0;
+    slong nd = 0;
 
     if (S->count == S->alloc)
     {
@@ -122,26 +168,36 @@ mode_set_add(mode_set * S, const char * s, const fmpz * w)
 
         S->alloc *= 2;
         S->letters = flint_realloc(S->letters, S->alloc * (S->n + 1));
+        S->hash = flint_realloc(S->hash, sizeof(uint64_t) * S->alloc);
+        S->ndiff = flint_realloc(S->ndiff, sizeof(slong) * S->alloc);
         fmpz_mat_init(big, S->alloc, 3);
         for (i = 0; i < S->count; i++)
             _fmpz_vec_set(WC_ROW(big, i), WC_ROW(S->wit, i), 3);
         fmpz_mat_swap(big, S->wit);
         fmpz_mat_clear(big);
     }
-    if (2 * (S->count + 1) > S->size)
+    for (i = 0; i < S->n; i++)
+        if (s[i] != base[i])
+        {
+            h ^= letter_key(i, s[i]);
+            nd++;
+        }
+    memcpy(S->letters + m * (S->n + 1), s, S->n);
+    S->letters[m * (S->n + 1) + S->n] = '\0';
+    S->hash[m] = h;
+    S->ndiff[m] = nd;
+    _fmpz_vec_set(WC_ROW(S->wit, m), w, 3);
+    S->count++;
+    if (2 * S->count > S->size)
     {
         S->size *= 2;
         S->slot = flint_realloc(S->slot, sizeof(slong) * S->size);
         for (i = 0; i < S->size; i++)
             S->slot[i] = -1;
-        for (i = 0; i < S->count; i++)
-            S->slot[mode_set_find(S, S->letters + i * (S->n + 1))] = i;
+        for (i = 0; i < S->count - 1; i++)
+            S->slot[mode_set_slot_of(S, i)] = i;
     }
-    memcpy(S->letters + S->count * (S->n + 1), s, S->n);
-    S->letters[S->count * (S->n + 1) + S->n] = '\0';
-    _fmpz_vec_set(WC_ROW(S->wit, S->count), w, 3);
-    S->slot[mode_set_find(S, s)] = S->count;
-    S->count++;
+    S->slot[mode_set_slot_of(S, m)] = m;
 }
 
 typedef struct
@@ -220,20 +276,58 @@ typedef struct
     char * cur;                     /* n letters and a NUL */
     slong pen;                      /* touching fixels with v_in < 0 */
     mode_set S;
+    char * base;                    /* n: the letters keys are taken from */
+    int track;                      /* keep diff and hash up to date */
+    slong * diff;                   /* the fixels where cur != base */
+    slong * dpos;                   /* n: i's place in diff, or -1 */
+    slong ndiff;
+    uint64_t hash;
     line_ref * ln;                  /* nrl: the lines on the plane */
     fmpz * dirs;                    /* 3 nrl */
     slong * goff;                   /* lines: ln[goff[g] .. goff[g + 1]) */
     slong k;                        /* lines on the current plane */
-    fmpz * u, * w, * mid, * ray, * wit;
+    int fast;                       /* K pointed, 3-D, few rays */
+    int sect;                       /* fast: p meets K in the ray b1 (1)
+                                       or the sector b1 .. b2 (2) */
+    fmpz * b1, * b2;
+    unsigned char * keep;           /* np: fast, the plane's line on p
+                                       enters the sector */
+    fmpz * u, * w, * mid, * ray, * wit, * ray3, * cand;
+    const fmpz * hcur;
+    slong ncand;
     fmpz_t t;
 }
 kwalk;
+
+/* Letter i changes from c to d: the difference set and its hash.  */
+static void
+track_letter(kwalk * W, slong i, char c, char d)
+{
+    if (c != W->base[i])
+        W->hash ^= letter_key(i, c);
+    else
+    {
+        W->dpos[i] = W->ndiff;
+        W->diff[W->ndiff++] = i;
+    }
+    if (d != W->base[i])
+        W->hash ^= letter_key(i, d);
+    else
+    {
+        slong last = W->diff[--W->ndiff];
+
+        W->diff[W->dpos[i]] = last;
+        W->dpos[last] = W->dpos[i];
+        W->dpos[i] = -1;
+    }
+}
 
 static void
 set_letter(kwalk * W, slong i)
 {
     int sn = W->sg[i], st = W->sg[W->n + i];
-    int was = W->cur[i] == '-';
+    char c = W->cur[i];
+    int was = c == '-';
 
     if (W->P->fixels[i].state == WC_NEAR)
         W->cur[i] = sn < 0 ? 'a' : 's';
@@ -244,6 +338,8 @@ set_letter(kwalk * W, slong i)
     else
         W->cur[i] = st > 0 ? 'l' : st < 0 ? 'r' : 'n';
     W->pen += (W->cur[i] == '-') - was;
+    if (W->track && W->cur[i] != c)
+        track_letter(W, i, c, W->cur[i]);
 }
 
 /* Plane q takes sign s (its columns sgnf s).  */
@@ -413,14 +509,30 @@ kwalk_init(kwalk * W, const wc_problem_t P)
     W->cur[n] = '\0';
     W->pen = 0;
     mode_set_init(&W->S, n);
+    W->base = flint_malloc(n + 1);
+    W->track = 0;
+    W->diff = flint_malloc(sizeof(slong) * (n + 1));
+    W->dpos = flint_malloc(sizeof(slong) * (n + 1));
+    for (i = 0; i < n; i++)
+        W->dpos[i] = -1;
+    W->ndiff = 0;
+    W->hash = 0;
     W->ln = NULL;
     W->dirs = NULL;
     W->goff = NULL;
     W->k = 0;
+    W->fast = 0;
+    W->sect = 0;
+    W->b1 = _fmpz_vec_init(3);
+    W->b2 = _fmpz_vec_init(3);
+    W->keep = NULL;
     W->u = _fmpz_vec_init(3);
     W->w = _fmpz_vec_init(3);
     W->mid = _fmpz_vec_init(3);
     W->ray = _fmpz_vec_init(3);
+    W->ray3 = _fmpz_vec_init(3);
+    W->cand = NULL;
+    W->hcur = NULL;
     W->wit = _fmpz_vec_init(3);
     fmpz_init(W->t);
     group_planes(W);
@@ -452,10 +564,19 @@ kwalk_clear(kwalk * W)
     flint_free(W->sg);
     flint_free(W->cur);
     mode_set_clear(&W->S);
+    flint_free(W->base);
+    _fmpz_vec_clear(W->b1, 3);
+    _fmpz_vec_clear(W->b2, 3);
+    flint_free(W->keep);
+    flint_free(W->diff);
+    flint_free(W->dpos);
     _fmpz_vec_clear(W->u, 3);
     _fmpz_vec_clear(W->w, 3);
     _fmpz_vec_clear(W->mid, 3);
     _fmpz_vec_clear(W->ray, 3);
+    _fmpz_vec_clear(W->ray3, 3);
+    if (W->cand != NULL)
+        _fmpz_vec_clear(W->cand, W->ncand);
     _fmpz_vec_clear(W->wit, 3);
     fmpz_clear(W->t);
 }
@@ -534,22 +655,102 @@ in_cone(kwalk * W, const fmpz * x)
     return on;
 }
 
+/* det(h, a, b) = h . (a x b), its sign.  */
+static int
+det_sgn(kwalk * W, const fmpz * h, const fmpz * a, const fmpz * b)
+{
+    _wc_zvec3_cross(W->ray3, a, b);
+    return _wc_zvec3_dot_sgn(h, W->ray3, W->t);
+}
+
+/* Fast path: whether x (nonzero, on the current plane h) lies in the
+   plane's part of K, the ray b1 or the sector from b1 to b2 (below pi,
+   counter-clockwise seen from h).  */
+static int
+in_sector(kwalk * W, const fmpz * x)
+{
+    const fmpz * h = W->hcur;
+
+    if (W->sect == 1)
+    {
+        _wc_zvec3_cross(W->ray3, W->b1, x);
+        return _fmpz_vec_is_zero(W->ray3, 3)
+            && _wc_zvec3_dot_sgn(W->b1, x, W->t) > 0;
+    }
+    return det_sgn(W, h, W->b1, x) >= 0 && det_sgn(W, h, x, W->b2) >= 0;
+}
+
+/* Fast path: the part of K on plane p, from K's rays: the rays on p and
+   the points where p crosses the segment of two rays on either side; b1
+   and b2 are the extreme ones (K is pointed, so the part is {0}, a ray
+   or a sector below pi).  Sets W->sect.  */
+static void
+sector_of(kwalk * W, slong p)
+{
+    const fmpz * h = WC_ROW(W->planes, p);
+    const fmpz_mat_struct * R = W->K->rays;
+    slong nr = fmpz_mat_nrows(R), i, j, nc = 0;
+    fmpz * c = W->cand;
+    fmpz_t si, sj;
+    int first;
+
+    fmpz_init(si);
+    fmpz_init(sj);
+    for (i = 0; i < nr; i++)
+    {
+        _fmpz_vec_dot(si, h, WC_ROW(R, i), 3);
+        if (fmpz_is_zero(si))
+            _fmpz_vec_set(c + 3 * nc++, WC_ROW(R, i), 3);
+        else if (fmpz_sgn(si) > 0)
+            for (j = 0; j < nr; j++)
+            {
+                _fmpz_vec_dot(sj, h, WC_ROW(R, j), 3);
+                if (fmpz_sgn(sj) >= 0)
+                    continue;
+                /* si r_j - sj r_i: on p, a positive combination */
+                _fmpz_vec_scalar_mul_fmpz(c + 3 * nc, WC_ROW(R, j), 3, si);
+                _fmpz_vec_scalar_submul_fmpz(c + 3 * nc, WC_ROW(R, i), 3,
+                                             sj);
+                _wc_zvec3_primitive(c + 3 * nc, W->t);
+                nc++;
+            }
+    }
+    W->sect = 0;
+    for (i = 0, first = 1; i < nc; i++)
+    {
+        if (first || det_sgn(W, h, c + 3 * i, W->b1) > 0)
+            _fmpz_vec_set(W->b1, c + 3 * i, 3);
+        if (first || det_sgn(W, h, W->b2, c + 3 * i) > 0)
+            _fmpz_vec_set(W->b2, c + 3 * i, 3);
+        first = 0;
+    }
+    if (nc > 0)
+    {
+        _wc_zvec3_cross(W->ray3, W->b1, W->b2);
+        W->sect = _fmpz_vec_is_zero(W->ray3, 3) ? 1 : 2;
+    }
+    fmpz_clear(si);
+    fmpz_clear(sj);
+}
+
 /* The current face, of dimension dim with point x (for a chamber: the
    point of the sector beside it on plane h, on side side): its mode when
    it lies in K and the mode is new.  */
 static void
 report(kwalk * W, int dim, const fmpz * x, const fmpz * h, int side)
 {
-    if (W->pen != 0 || W->S.slot[mode_set_find(&W->S, W->cur)] >= 0
+    if (W->pen != 0 || (W->sect && !in_sector(W, x))
+        || W->S.slot[mode_set_find(&W->S, W->hash, W->ndiff, W->diff,
+                                   W->cur)] >= 0
         || !in_cone(W, x))
         return;
     if (dim == 3)
     {
         chamber_witness(W->wit, W, x, h, side);
-        mode_set_add(&W->S, W->cur, W->wit);
+        mode_set_add(&W->S, W->cur, W->base, W->wit);
     }
     else
-        mode_set_add(&W->S, W->cur, x);
+        mode_set_add(&W->S, W->cur, W->base, x);
 }
 
 /* ---------------------------------------------------------------------
@@ -588,6 +789,16 @@ sort_lines(kwalk * W, slong p)
 
         if (W->rl[i] == p)
             continue;
+        if (W->sect)
+        {
+            const fmpz * hq = WC_ROW(W->planes, W->rl[i]);
+            int s1 = _wc_zvec3_dot_sgn(hq, W->b1, W->t);
+            int s2 = _wc_zvec3_dot_sgn(hq, W->b2, W->t);
+
+            W->keep[W->rl[i]] = s1 * s2 <= 0;
+            if (!W->keep[W->rl[i]])
+                continue;
+        }
         _wc_zvec3_cross(r->d, h, WC_ROW(W->planes, W->rl[i]));
         _wc_zvec3_canonical(r->d, W->t);
         _fmpz_vec_dot(r->x, r->d, W->u, 3);
@@ -680,13 +891,26 @@ walk_plane(kwalk * W, slong p)
     slong i, j;
     int ustart;
 
+    W->hcur = h;
+    W->sect = 0;
+    if (W->fast)
+    {
+        sector_of(W, p);
+        if (W->sect == 0)
+            return;
+    }
     sort_lines(W, p);
     if (W->k == 0)
         return;
     ustart = fmpz_is_zero(W->ln[0].y);
     arc_point(W->mid, W, p, 0);
+    /* the planes whose line on p misses p's part of K: their sign on it */
+    _fmpz_vec_add(W->ray, W->b1, W->b2, 3);
     for (i = 0; i < W->nrl; i++)
-        plane_sign_at(W, W->rl[i], W->mid);
+        if (W->sect && !W->keep[W->rl[i]] && W->rl[i] != p)
+            plane_sign_at(W, W->rl[i], W->ray);
+        else
+            plane_sign_at(W, W->rl[i], W->mid);
     for (j = 0; j < 2 * W->k; j++)
     {
         if (j > 0 || !ustart)
@@ -740,12 +964,29 @@ _wc_modes_walk(wc_modes_t M, const wc_problem_t P, wc_error_t err)
     status = make_cone(&W, err);
     if (status == WC_OK)
     {
-        /* the origin */
-        mode_set_add(&W.S, W.cur, W.ray);
-        if (W.K->dim == 1 && W.K->lineality_dim == 1)
-            walk_line(&W);
-        else
+        char * origin = flint_malloc(W.n + 1);
+        int line = W.K->dim == 1 && W.K->lineality_dim == 1;
+
+        /* the origin first; keys from the letters once the constant signs
+           are set */
+        memcpy(origin, W.cur, W.n + 1);
+        if (!line)
             find_relevant(&W);
+        memcpy(W.base, W.cur, W.n + 1);
+        W.track = 1;
+        mode_set_add(&W.S, origin, W.base, W.ray);
+        flint_free(origin);
+        if (line)
+            walk_line(&W);
+        W.ncand = fmpz_mat_nrows(W.K->rays);
+        W.ncand = 3 * (W.ncand * W.ncand + 1);
+        W.fast = W.K->dim == 3 && W.K->lineality_dim == 0
+            && fmpz_mat_nrows(W.K->rays) <= 32;
+        if (W.fast)
+        {
+            W.cand = _fmpz_vec_init(W.ncand);
+            W.keep = flint_calloc(W.np + 1, 1);
+        }
         W.ln = flint_malloc(sizeof(line_ref) * (W.nrl + 1));
         W.dirs = _fmpz_vec_init(3 * W.nrl + 1);
         W.goff = flint_malloc(sizeof(slong) * (W.nrl + 2));
