@@ -36,9 +36,10 @@
    is two rays, on which no sign need be constant: their modes are read
    off directly.
 
-   Cost: one cone conversion of the n touching rows, then O(g) per plane
-   for g generators of K, then O(L (L log L + R)) for L relevant planes of
-   R columns, and O(n) per face inside K for the lookup of its mode.  */
+   Cost: one conversion of the n touching rows, O(g) per plane for K's g
+   generators, O(L (L log L + R)) for L relevant planes of R columns (when
+   K is pointed with few rays, only the lines entering the plane's part
+   of K are sorted), O(n) per new mode and O(|D|) per face in K (below).  */
 
 #include <config.h>
 
@@ -269,7 +270,6 @@ typedef struct
     slong np;
     wc_cone_t K;                    /* the non-penetrating twists */
     int kray;                       /* K is one ray: test faces on it */
-    unsigned char * relevant;       /* np: the plane meets K beyond 0 */
     slong * rl;                     /* the relevant planes, ascending */
     slong nrl;
     int * sg;                       /* 2n: signs at the current face */
@@ -292,6 +292,7 @@ typedef struct
     fmpz * b1, * b2;
     unsigned char * keep;           /* np: fast, the plane's line on p
                                        enters the sector */
+    fmpz * vecs;                    /* 24: the vectors below */
     fmpz * u, * w, * mid, * ray, * wit, * ray3, * cand;
     const fmpz * hcur;
     slong ncand;
@@ -470,16 +471,12 @@ find_relevant(kwalk * W)
         g = WC_ROW(K->rays, 0);
     else if (fmpz_mat_nrows(K->lines) > 0)
         g = WC_ROW(K->lines, 0);
-    W->relevant = flint_calloc(W->np + 1, 1);
     W->rl = flint_malloc(sizeof(slong) * (W->np + 1));
     W->nrl = 0;
     for (q = 0; q < W->np && g != NULL; q++)
     {
         if (meets_cone(W, WC_ROW(W->planes, q)))
-        {
-            W->relevant[q] = 1;
             W->rl[W->nrl++] = q;
-        }
         else
             plane_sign_at(W, q, g);
     }
@@ -499,7 +496,6 @@ kwalk_init(kwalk * W, const wc_problem_t P)
     W->coff = NULL;
     fmpz_mat_init(W->planes, 0, 3);
     wc_cone_init(W->K, 3);
-    W->relevant = NULL;
     W->rl = NULL;
     W->nrl = 0;
     W->sg = flint_calloc(K + 1, sizeof(int));
@@ -521,19 +517,20 @@ kwalk_init(kwalk * W, const wc_problem_t P)
     W->dirs = NULL;
     W->goff = NULL;
     W->k = 0;
+    W->vecs = _fmpz_vec_init(24);
+    W->u = W->vecs;
+    W->w = W->vecs + 3;
+    W->mid = W->vecs + 6;
+    W->ray = W->vecs + 9;
+    W->ray3 = W->vecs + 12;
+    W->wit = W->vecs + 15;
+    W->b1 = W->vecs + 18;
+    W->b2 = W->vecs + 21;
     W->fast = 0;
     W->sect = 0;
-    W->b1 = _fmpz_vec_init(3);
-    W->b2 = _fmpz_vec_init(3);
     W->keep = NULL;
-    W->u = _fmpz_vec_init(3);
-    W->w = _fmpz_vec_init(3);
-    W->mid = _fmpz_vec_init(3);
-    W->ray = _fmpz_vec_init(3);
-    W->ray3 = _fmpz_vec_init(3);
     W->cand = NULL;
     W->hcur = NULL;
-    W->wit = _fmpz_vec_init(3);
     fmpz_init(W->t);
     group_planes(W);
 }
@@ -559,25 +556,17 @@ kwalk_clear(kwalk * W)
     flint_free(W->col);
     fmpz_mat_clear(W->planes);
     wc_cone_clear(W->K);
-    flint_free(W->relevant);
     flint_free(W->rl);
     flint_free(W->sg);
     flint_free(W->cur);
     mode_set_clear(&W->S);
     flint_free(W->base);
-    _fmpz_vec_clear(W->b1, 3);
-    _fmpz_vec_clear(W->b2, 3);
     flint_free(W->keep);
     flint_free(W->diff);
     flint_free(W->dpos);
-    _fmpz_vec_clear(W->u, 3);
-    _fmpz_vec_clear(W->w, 3);
-    _fmpz_vec_clear(W->mid, 3);
-    _fmpz_vec_clear(W->ray, 3);
-    _fmpz_vec_clear(W->ray3, 3);
     if (W->cand != NULL)
         _fmpz_vec_clear(W->cand, W->ncand);
-    _fmpz_vec_clear(W->wit, 3);
+    _fmpz_vec_clear(W->vecs, 24);
     fmpz_clear(W->t);
 }
 
