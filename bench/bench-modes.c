@@ -1,23 +1,28 @@
-/* bench-modes.c -- time wc_modes_enumerate (the arrangement of the 2n
-   planes J_k . nu = 0) against brute force over the 4^n mode strings.
+/* bench-modes.c -- time wc_modes_enumerate (the faces of the arrangement
+   of the planes J_k . nu = 0 inside the non-penetration cone) against the
+   walk of the whole arrangement it replaced (tests/ref-modes.c) and
+   against brute force over the 4^n mode strings.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   Usage: bench-modes [SECONDS_PER_CELL] [MAXN_BRUTE]
+   Usage: bench-modes [SECONDS_PER_CELL] [MAXN_BRUTE] [MAXN_WALK]
    Problems: n touching fixels at distinct rational points of the unit
    circle, every normal the inward radial direction tilted by a different
    rational amount, so that the normal lines do not meet in one point and
-   the 2n planes are in general position (checked: no three columns of J
-   are linearly dependent).  Each
+   the 2n planes are in general position (checked up to n = 100: no three
+   columns of J are linearly dependent; the check is O(n^3)).  Each
    wc_modes_enumerate cell is the mean over repeated runs of at least
-   SECONDS_PER_CELL (default 0.2 s); brute force (tests/ref-kin.c: one
-   exact LP per string) runs once per size up to MAXN_BRUTE (default 8)
-   fixels, repeated only while shorter than the budget.  Where both run,
-   their lists must be equal (exit 3 otherwise).  Ratios measured in this
-   one process are the numbers to compare, not the absolute times.  The
-   last line is "modes speed-up over brute force at n=8: X x".  */
+   SECONDS_PER_CELL (default 0.2 s); the whole-arrangement walk runs up
+   to MAXN_WALK (default 500) fixels and brute force (tests/ref-kin.c: one
+   exact LP per string) up to MAXN_BRUTE (default 8), each repeated only
+   while shorter than the budget.  Where they run, their lists must be
+   equal (and the walk's witnesses too; exit 3 otherwise).  Ratios
+   measured in this one process are the numbers to compare, not the
+   absolute times.  Beyond WC_MODES_MAX_FIXELS the walk is called
+   directly (_wc_modes_walk); sizes stop after a call of over 5 s.  The last lines are the growth exponents and "modes
+   speed-up over brute force at n=8: X x".  */
 
 #include <config.h>
 
@@ -34,7 +39,9 @@
 #include "wrenchcone.h"
 #include "benchutil.h"
 #include "analysis/kinematics.h"
+#include "analysis/modeswalk.h"
 #include "ref-kin.h"
+#include "ref-modes.h"
 
 /* Fixel k: t = (k + 1) / (n - k + 1), the circle point
    ((1 - t^2), 2 t) / (1 + t^2), at an angle in (0, pi) increasing with k:
@@ -159,7 +166,10 @@ time_enumerate(wc_modes_t M, const wc_problem_t P, double budget)
     wc_error_init(err);
     do
     {
-        if (wc_modes_enumerate(M, P, err) != WC_OK)
+        /* beyond the command's limit, the walk itself (the problem is
+           valid by construction) */
+        if ((P->n <= WC_MODES_MAX_FIXELS ? wc_modes_enumerate(M, P, err)
+             : _wc_modes_walk(M, P, err)) != WC_OK)
         {
             fprintf(stderr, "bench-modes: %s\n",
                     err->message ? err->message : "wc_modes_enumerate failed");
@@ -169,6 +179,51 @@ time_enumerate(wc_modes_t M, const wc_problem_t P, double budget)
         t = wcbench_now() - t0;
     }
     while (t < budget);
+    wc_error_clear(err);
+    return t / reps;
+}
+
+/* Mean seconds per walk of the whole arrangement; its list must be M's,
+   witnesses included.  */
+static double
+time_walk(const wc_modes_t M, const wc_problem_t P, double budget)
+{
+    wc_modes_t R;
+    wc_error_t err;
+    double t0 = wcbench_now(), t;
+    long reps = 0;
+    slong i;
+
+    wc_modes_init(R);
+    wc_error_init(err);
+    do
+    {
+        if (ref_modes_walk(R, P, err) != WC_OK)
+        {
+            fprintf(stderr, "bench-modes: the whole-arrangement walk "
+                    "failed\n");
+            exit(3);
+        }
+        reps++;
+        t = wcbench_now() - t0;
+    }
+    while (t < budget);
+    if (R->count != M->count)
+    {
+        fprintf(stderr, "bench-modes: n=%ld: %ld modes, the whole walk "
+                "%ld\n", (long) P->n, (long) M->count, (long) R->count);
+        exit(3);
+    }
+    for (i = 0; i < M->count; i++)
+        if (strcmp(R->modes[i], M->modes[i]) != 0
+            || !_fmpz_vec_equal(R->witness->rows[i], M->witness->rows[i],
+                                3))
+        {
+            fprintf(stderr, "bench-modes: n=%ld: the whole walk differs "
+                    "at %s\n", (long) P->n, M->modes[i]);
+            exit(3);
+        }
+    wc_modes_clear(R);
     wc_error_clear(err);
     return t / reps;
 }
@@ -198,41 +253,74 @@ time_brute(char *** modes, slong * count, const wc_problem_t P,
     return t / reps;
 }
 
+/* Least-squares slope of log y against log x over points [lo, hi).  */
+static double
+slope(const double * x, const double * y, slong lo, slong hi)
+{
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, k = (double) (hi - lo);
+    slong i;
+
+    for (i = lo; i < hi; i++)
+    {
+        sx += log(x[i]);
+        sy += log(y[i]);
+        sxx += log(x[i]) * log(x[i]);
+        sxy += log(x[i]) * log(y[i]);
+    }
+    return (k * sxy - sx * sy) / (k * sxx - sx * sx);
+}
+
 int
 main(int argc, char ** argv)
 {
-    static const slong sizes[] = { 5, 6, 7, 8, 10, 20, 50, 100 };
+    static const slong sizes[] = { 5, 6, 7, 8, 10, 20, 50, 100, 200, 500,
+                                   1000, 2000, 5000, 10000 };
     const slong nsizes = (slong) (sizeof sizes / sizeof sizes[0]);
     double budget = argc > 1 ? atof(argv[1]) : 0.2;
     slong maxbrute = argc > 2 ? atol(argv[2]) : 8;
-    double sx = 0, sy = 0, sxx = 0, sxy = 0, speedup8 = 0;
-    slong npts = 0, s, i;
+    slong maxwalk = argc > 3 ? atol(argv[3]) : 500;
+    double xs[16], ys[16], speedup8 = 0;
+    slong npts = 0, first1000 = -1, s, i;
 
-    if (budget <= 0 || maxbrute < 0)
+    if (budget <= 0 || maxbrute < 0 || maxwalk < 0)
     {
         fprintf(stderr, "usage: bench-modes [SECONDS_PER_CELL] "
-                "[MAXN_BRUTE]\n");
+                "[MAXN_BRUTE] [MAXN_WALK]\n");
         return 2;
     }
     wc_init();
     printf("Kinematically feasible modes of n touching fixels in general "
-           "position:\nwc_modes_enumerate (arrangement of the 2n planes) vs "
-           "brute force (one exact LP per string).\n");
-    printf("%4s  %7s  %14s  %16s  %10s  %s\n", "n", "modes", "enumerate ms",
-           "brute force ms", "speed-up", "planes");
+           "position:\nwc_modes_enumerate (faces inside the non-penetration "
+           "cone) vs the walk of the\nwhole arrangement of the 2n planes "
+           "(tests/ref-modes.c) vs brute force (one exact LP per string).\n");
+    printf("%5s  %6s  %12s  %13s  %8s  %14s  %9s  %s\n", "n", "modes",
+           "enumerate ms", "whole walk ms", "walk/enu", "brute force ms",
+           "brute/enu", "planes");
     for (s = 0; s < nsizes; s++)
     {
         slong n = sizes[s];
         wc_problem_t P;
         wc_modes_t M;
-        double te, tb = 0;
-        int gp;
+        double te, tw = 0, tb = 0;
+        char wcol[32], rcol[32], bcol[32], scol[32];
+        int gp = -1;
 
         wc_problem_init(P);
         wc_modes_init(M);
         make_problem(P, n);
-        gp = general_position(P);
+        if (n <= 100)
+            gp = general_position(P);
         te = time_enumerate(M, P, budget);
+        strcpy(wcol, "-");
+        strcpy(rcol, "-");
+        strcpy(bcol, "-");
+        strcpy(scol, "-");
+        if (n <= maxwalk)
+        {
+            tw = time_walk(M, P, budget);
+            snprintf(wcol, sizeof wcol, "%.3f", 1e3 * tw);
+            snprintf(rcol, sizeof rcol, "%.1fx", tw / te);
+        }
         if (n <= maxbrute)
         {
             char ** list;
@@ -254,33 +342,39 @@ main(int argc, char ** argv)
                     return 3;
                 }
             ref_modes_free(list, count);
-            printf("%4ld  %7ld  %14.3f  %16.1f  %9.0fx  %s\n", (long) n,
-                   (long) M->count, 1e3 * te, 1e3 * tb, tb / te,
-                   gp ? "general" : "DEGENERATE");
+            snprintf(bcol, sizeof bcol, "%.1f", 1e3 * tb);
+            snprintf(scol, sizeof scol, "%.0fx", tb / te);
             if (n == 8)
                 speedup8 = tb / te;
         }
-        else
-            printf("%4ld  %7ld  %14.3f  %16s  %10s  %s\n", (long) n,
-                   (long) M->count, 1e3 * te, "-", "-",
-                   gp ? "general" : "DEGENERATE");
+        printf("%5ld  %6ld  %12.3f  %13s  %8s  %14s  %9s  %s\n", (long) n,
+               (long) M->count, 1e3 * te, wcol, rcol, bcol, scol,
+               gp < 0 ? "unchecked" : gp ? "general" : "DEGENERATE");
+        fflush(stdout);
         if (n >= 10)
         {
-            double x = log((double) n), y = log(te);
-
-            sx += x;
-            sy += y;
-            sxx += x * x;
-            sxy += x * y;
+            if (n >= 1000 && first1000 < 0)
+                first1000 = npts;
+            xs[npts] = (double) n;
+            ys[npts] = te;
             npts++;
         }
         wc_modes_clear(M);
         wc_problem_clear(P);
+        if (te > 5.0 && s + 1 < nsizes)
+        {
+            printf("(stopped: over 5 s per call; the cone conversion "
+                   "dominates)\n");
+            break;
+        }
     }
-    if (npts >= 2)
-        printf("growth exponent of enumerate time, n = 10..100 (least-squares "
-               "slope of log time vs log n): %.2f\n",
-               (npts * sxy - sx * sy) / (npts * sxx - sx * sx));
+    printf("growth exponent of enumerate time (least-squares slope of log "
+           "time vs log n): n = 10..%ld: %.2f", (long) xs[npts - 1],
+           slope(xs, ys, 0, npts));
+    if (first1000 >= 0 && npts - first1000 >= 2)
+        printf("; n = 1000..%ld: %.2f", (long) xs[npts - 1],
+               slope(xs, ys, first1000, npts));
+    printf("\n");
     if (maxbrute >= 8)
         printf("modes speed-up over brute force at n=8: %.0f x\n", speedup8);
     flint_cleanup_master();

@@ -8,6 +8,7 @@ tests_libwctest_la_SOURCES = \
 	tests/testutil.c tests/testutil.h \
 	tests/ref-lp.c tests/ref-lp.h \
 	tests/ref-kin.c tests/ref-kin.h \
+	tests/ref-modes.c tests/ref-modes.h \
 	tests/ref-stab.c tests/ref-stab.h \
 	tests/ref-plan.c tests/ref-plan.h \
 	tests/ref-faces.c tests/ref-faces.h
@@ -20,6 +21,7 @@ C_TESTS = \
 	tests/t-cone \
 	tests/t-routes \
 	tests/t-modes \
+	tests/t-modeswalk \
 	tests/t-verify \
 	tests/t-faces \
 	tests/t-checkregion \

@@ -1,23 +1,10 @@
-/* kinematics.c -- kinematically feasible modes, by the arrangement of the
-   planes J_k . nu = 0, and one mode's certificate.
+/* kinematics.c -- kinematically feasible modes (the walk itself is in
+   modeswalk.c), the constraint rows of a mode, and one mode's
+   certificate.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
-   Public License, version 2 or (at your option) any later version.
-
-   The 2n linear forms v_k = J_k . nu cut R^3 into relatively open cones,
-   the faces of a central arrangement: the origin, the rays where two
-   planes meet, the arcs of each plane between consecutive rays, and the
-   chambers.  A mode's constraints are sign conditions on the v_k, so its
-   feasible set is a union of faces, and it is feasible iff some face's
-   sign vector maps to it.  With P distinct planes there are at most
-   P (P - 1) rays, as many arcs per plane as rays on it, and two chamber
-   sides per arc: O(n^2) faces.  The walk around each plane
-   (arrangement.c) reports the planes whose sign changed, and the mode
-   letters and a count of penetrated fixels follow one form at a time, so
-   a penetrating face costs O(1) and only the others pay O(n) for the
-   exact lookup of their mode: O(n^2 log n + n F) in all (the log from
-   sorting each plane's rays), F the number of non-penetrating faces.  */
+   Public License, version 2 or (at your option) any later version.  */
 
 #include <config.h>
 
@@ -32,12 +19,10 @@
 #include "model/mode.h"
 #include "model/model.h"
 #include "exact/vec3.h"
-#include "exact/hash.h"
-#include "exact/zvec3set.h"
-#include "exact/arrangement.h"
 #include "exact/cddbridge.h"
 #include "exact/lp.h"
 #include "analysis/kinematics.h"
+#include "analysis/modeswalk.h"
 
 
 /* v (len entries) := the primitive integer vector on the ray of x.  */
@@ -64,9 +49,8 @@ fmpq_vec_primitive(fmpz * v, const fmpq * x, slong len)
     fmpz_clear(c);
 }
 
-/* a (2n x 3): row k is J's column k as a primitive integer vector.  */
-static void
-columns(fmpz_mat_t a, const wc_problem_t P)
+void
+_wc_modes_columns(fmpz_mat_t a, const wc_problem_t P)
 {
     slong K = 2 * P->n, k;
     fmpq_mat_t J, Jt;
@@ -96,7 +80,7 @@ wc_mode_constraints(fmpz_mat_t rows, wc_relation ** rel,
     fmpz_mat_init(a, 2 * n, 3);
     fmpz_mat_init(R, 2 * n, 3);
     r = malloc(sizeof(wc_relation) * (2 * n + 1));
-    columns(a, P);
+    _wc_modes_columns(a, P);
 #define ADD(k, sign, rl) do { \
         _fmpz_vec_scalar_mul_si(WC_ROW(R, m), WC_ROW(a, k), 3, sign); \
         r[m++] = (rl); \
@@ -138,293 +122,6 @@ wc_mode_constraints(fmpz_mat_t rows, wc_relation ** rel,
     return WC_OK;
 }
 
-/* ---------------------------------------------------------------------
-   The set of modes found so far: open addressing on the mode strings.  */
-
-typedef struct
-{
-    slong n;            /* letters per mode */
-    slong size;         /* slots, a power of two */
-    slong count;
-    slong * slot;
-    char * letters;     /* count x (n + 1) */
-    fmpz_mat_t wit;     /* count x 3 */
-    slong alloc;
-}
-mode_set;
-
-static void
-mode_set_init(mode_set * S, slong n)
-{
-    slong i;
-
-    S->n = n;
-    S->size = 64;
-    S->count = 0;
-    S->alloc = 32;
-    S->slot = flint_malloc(sizeof(slong) * S->size);
-    for (i = 0; i < S->size; i++)
-        S->slot[i] = -1;
-    S->letters = flint_malloc(S->alloc * (n + 1));
-    fmpz_mat_init(S->wit, S->alloc, 3);
-}
-
-static void
-mode_set_clear(mode_set * S)
-{
-    flint_free(S->slot);
-    flint_free(S->letters);
-    fmpz_mat_clear(S->wit);
-}
-
-/* The slot of mode s: holding it, or empty.  */
-static slong
-mode_set_find(const mode_set * S, const char * s)
-{
-    slong i = (slong) (_wc_hash_bytes((const unsigned char *) s, S->n)
-                       & (S->size - 1));
-
-    while (S->slot[i] >= 0
-           && memcmp(S->letters + S->slot[i] * (S->n + 1), s, S->n) != 0)
-        i = (i + 1) & (S->size - 1);
-    return i;
-}
-
-/* Add s (known to be new) with witness w.  */
-static void
-mode_set_add(mode_set * S, const char * s, const fmpz * w)
-{
-    slong i;
-
-    if (S->count == S->alloc)
-    {
-        fmpz_mat_t big;
-
-        S->alloc *= 2;
-        S->letters = flint_realloc(S->letters, S->alloc * (S->n + 1));
-        fmpz_mat_init(big, S->alloc, 3);
-        for (i = 0; i < S->count; i++)
-            _fmpz_vec_set(WC_ROW(big, i), WC_ROW(S->wit, i), 3);
-        fmpz_mat_swap(big, S->wit);
-        fmpz_mat_clear(big);
-    }
-    if (2 * (S->count + 1) > S->size)
-    {
-        S->size *= 2;
-        S->slot = flint_realloc(S->slot, sizeof(slong) * S->size);
-        for (i = 0; i < S->size; i++)
-            S->slot[i] = -1;
-        for (i = 0; i < S->count; i++)
-            S->slot[mode_set_find(S, S->letters + i * (S->n + 1))] = i;
-    }
-    memcpy(S->letters + S->count * (S->n + 1), s, S->n);
-    S->letters[S->count * (S->n + 1) + S->n] = '\0';
-    _fmpz_vec_set(WC_ROW(S->wit, S->count), w, 3);
-    S->slot[mode_set_find(S, s)] = S->count;
-    S->count++;
-}
-
-/* ---------------------------------------------------------------------
-   The walk over the faces.  */
-
-/* The walk's state: the signs of the 2n forms at the current face, the
-   mode letters they give, and how many touching fixels they penetrate;
-   all kept up to date one sign at a time.  The forms are the columns of
-   J, each a sign times the canonical normal of its plane.  */
-typedef struct
-{
-    const wc_problem_struct * P;
-    slong n;
-    fmpz_mat_t a;                   /* 2n columns, primitive */
-    int * sgnf;                     /* 2n: column k is sgnf[k] h_plane */
-    slong * coff;                   /* the columns of plane q are */
-    slong * col;                    /* col[coff[q] .. coff[q + 1]) */
-    fmpz_mat_t planes;              /* the distinct planes, canonical */
-    int * sg;
-    char * cur;                     /* n letters and a NUL */
-    slong pen;                      /* touching fixels with v_in < 0 */
-    mode_set S;
-    fmpz * wit;
-    fmpz_t t;
-}
-walk;
-
-/* The forms of W->a grouped by plane.  */
-static void
-walk_planes(walk * W)
-{
-    slong K = 2 * W->n, np, k;
-    slong * plane_of = flint_malloc(sizeof(slong) * (K + 1));
-    fmpz * v = _fmpz_vec_init(3);
-    _wc_zvec3_set_t H;
-
-    _wc_zvec3_set_init(H, K);
-    for (k = 0; k < K; k++)
-    {
-        _fmpz_vec_set(v, WC_ROW(W->a, k), 3);
-        W->sgnf[k] = _wc_zvec3_canonical(v, W->t) < 0 ? -1 : 1;
-        plane_of[k] = _wc_zvec3_set_id(H, v);
-    }
-    np = H->count;
-    fmpz_mat_clear(W->planes);
-    fmpz_mat_init(W->planes, np, 3);
-    for (k = 0; k < np; k++)
-        _fmpz_vec_set(WC_ROW(W->planes, k), _wc_zvec3_set_entry(H, k), 3);
-    W->coff = flint_calloc(np + 2, sizeof(slong));
-    for (k = 0; k < K; k++)
-        W->coff[plane_of[k] + 2]++;
-    for (k = 0; k < np; k++)
-        W->coff[k + 2] += W->coff[k + 1];
-    for (k = 0; k < K; k++)
-        W->col[W->coff[plane_of[k] + 1]++] = k;
-    flint_free(plane_of);
-    _fmpz_vec_clear(v, 3);
-    _wc_zvec3_set_clear(H);
-}
-
-static void
-walk_init(walk * W, const wc_problem_t P)
-{
-    slong n = P->n, K = 2 * n;
-
-    W->P = P;
-    W->n = n;
-    fmpz_mat_init(W->a, K, 3);
-    columns(W->a, P);
-    W->sgnf = flint_malloc(sizeof(int) * (K + 1));
-    W->col = flint_malloc(sizeof(slong) * (K + 1));
-    fmpz_mat_init(W->planes, 0, 3);
-    W->sg = flint_calloc(K + 1, sizeof(int));
-    W->cur = flint_malloc(n + 1);
-    memset(W->cur, ' ', n);
-    W->cur[n] = '\0';
-    W->pen = 0;
-    mode_set_init(&W->S, n);
-    W->wit = _fmpz_vec_init(3);
-    fmpz_init(W->t);
-    walk_planes(W);
-}
-
-static void
-walk_clear(walk * W)
-{
-    fmpz_mat_clear(W->a);
-    flint_free(W->sgnf);
-    flint_free(W->coff);
-    flint_free(W->col);
-    fmpz_mat_clear(W->planes);
-    flint_free(W->sg);
-    flint_free(W->cur);
-    mode_set_clear(&W->S);
-    _fmpz_vec_clear(W->wit, 3);
-    fmpz_clear(W->t);
-}
-
-static void
-set_letter(walk * W, slong i)
-{
-    int sn = W->sg[i], st = W->sg[W->n + i];
-    int was = W->cur[i] == '-';
-
-    if (W->P->fixels[i].state == WC_NEAR)
-        W->cur[i] = sn < 0 ? 'a' : 's';
-    else if (sn < 0)
-        W->cur[i] = '-';
-    else if (sn > 0)
-        W->cur[i] = 's';
-    else
-        W->cur[i] = st > 0 ? 'l' : st < 0 ? 'r' : 'n';
-    W->pen += (W->cur[i] == '-') - was;
-}
-
-static void
-set_sign(walk * W, slong k, int s)
-{
-    W->sg[k] = s;
-    set_letter(W, k % W->n);
-}
-
-/* Witness of a chamber beside the arc with point m on the plane of
-   normal h: m + side t h with t below every |a_k . m| / |a_k . h|, so
-   that no sign of m changes but those of the plane's own columns.  */
-static void
-chamber_witness(fmpz * w, walk * W, const fmpz * m, const fmpz * h, int side)
-{
-    slong K = fmpz_mat_nrows(W->a), k;
-    fmpz_t num, den, am, ah, c1, c2;
-
-    fmpz_init(num);
-    fmpz_init(den);
-    fmpz_init(am);
-    fmpz_init(ah);
-    fmpz_init(c1);
-    fmpz_init(c2);
-    fmpz_one(num);              /* t = num / den, start at 1 */
-    fmpz_one(den);
-    for (k = 0; k < K; k++)
-    {
-        _fmpz_vec_dot(am, WC_ROW(W->a, k), m, 3);
-        _fmpz_vec_dot(ah, WC_ROW(W->a, k), h, 3);
-        if (fmpz_is_zero(am) || fmpz_is_zero(ah))
-            continue;
-        fmpz_abs(am, am);
-        fmpz_abs(ah, ah);
-        fmpz_mul_ui(ah, ah, 2);
-        fmpz_mul(c1, am, den);
-        fmpz_mul(c2, num, ah);
-        if (fmpz_cmp(c1, c2) < 0)
-        {
-            fmpz_set(num, am);
-            fmpz_set(den, ah);
-        }
-    }
-    for (k = 0; k < 3; k++)
-    {
-        fmpz_mul(w + k, m + k, den);
-        fmpz_mul(c1, h + k, num);
-        if (side > 0)
-            fmpz_add(w + k, w + k, c1);
-        else
-            fmpz_sub(w + k, w + k, c1);
-    }
-    _wc_zvec3_primitive(w, W->t);
-    fmpz_clear(num);
-    fmpz_clear(den);
-    fmpz_clear(am);
-    fmpz_clear(ah);
-    fmpz_clear(c1);
-    fmpz_clear(c2);
-}
-
-/* A face of the arrangement: update the forms of the planes whose sign
-   changed; a face that penetrates no touching fixel and has a new mode
-   adds it.  Only the non-penetrating faces pay for the lookup.  */
-static int
-visit_face(void * data, const _wc_face_struct * F, wc_error_t err)
-{
-    walk * W = data;
-    slong i, j;
-
-    (void) err;
-    for (i = 0; i < F->nchanged; i++)
-    {
-        slong q = F->changed[i];
-
-        for (j = W->coff[q]; j < W->coff[q + 1]; j++)
-            set_sign(W, W->col[j], W->sgnf[W->col[j]] * F->sign[q]);
-    }
-    if (W->pen != 0 || W->S.slot[mode_set_find(&W->S, W->cur)] >= 0)
-        return WC_OK;
-    if (F->dim == 3)
-    {
-        chamber_witness(W->wit, W, F->point, F->normal, F->side);
-        mode_set_add(&W->S, W->cur, W->wit);
-    }
-    else
-        mode_set_add(&W->S, W->cur, F->point);
-    return WC_OK;
-}
-
 void
 wc_modes_init(wc_modes_t M)
 {
@@ -446,68 +143,6 @@ wc_modes_clear(wc_modes_t M)
     wc_modes_init(M);
 }
 
-typedef struct
-{
-    const char * s;
-    slong i;
-}
-mode_ref;
-
-static int
-mode_ref_cmp(const void * p, const void * q)
-{
-    return strcmp(((const mode_ref *) p)->s, ((const mode_ref *) q)->s);
-}
-
-/* M := the modes of S, sorted.  */
-static void
-modes_sorted(wc_modes_t M, const mode_set * S)
-{
-    slong n = S->n, i;
-    mode_ref * ref = flint_malloc(sizeof(mode_ref) * (S->count + 1));
-
-    for (i = 0; i < S->count; i++)
-    {
-        ref[i].s = S->letters + i * (n + 1);
-        ref[i].i = i;
-    }
-    qsort(ref, S->count, sizeof(mode_ref), mode_ref_cmp);
-    wc_modes_clear(M);
-    M->n = n;
-    M->count = S->count;
-    M->modes = malloc(sizeof(char *) * (S->count + 1));
-    fmpz_mat_clear(M->witness);
-    fmpz_mat_init(M->witness, S->count, 3);
-    for (i = 0; i < S->count; i++)
-    {
-        M->modes[i] = malloc(n + 1);
-        memcpy(M->modes[i], ref[i].s, n + 1);
-        _fmpz_vec_set(WC_ROW(M->witness, i), WC_ROW(S->wit, ref[i].i), 3);
-    }
-    flint_free(ref);
-}
-
-/* The walk of arrangement.c over the planes of the columns of J: every
-   plane holds at least one line (the two columns of a fixel are never
-   parallel).  */
-static int
-enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err)
-{
-    _wc_arrangement_t R;
-    walk W;
-    int status;
-
-    walk_init(&W, P);
-    status = _wc_arrangement_init(R, W.planes, err);
-    if (status == WC_OK)
-        status = _wc_arrangement_walk(R, visit_face, &W, err);
-    if (status == WC_OK)
-        modes_sorted(M, &W.S);
-    _wc_arrangement_clear(R);
-    walk_clear(&W);
-    return status;
-}
-
 int
 wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err)
 {
@@ -517,7 +152,7 @@ wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err)
         status = wc_problem_check_fixels(P, WC_MODES_MAX_FIXELS, 0,
                                          "mode enumeration", err);
     if (status == WC_OK)
-        status = enumerate(M, P, err);
+        status = _wc_modes_walk(M, P, err);
     return status;
 }
 

@@ -55,12 +55,16 @@ void wc_modes_init(wc_modes_t M);
 void wc_modes_clear(wc_modes_t M);
 
 /* Enumerate the feasible modes by the faces of the central arrangement of
-   the 2n planes J_k . nu = 0 in R^3 (O(n^2) faces: the origin, the rays
-   where planes meet, the arcs between them, the chambers), mapping each
-   non-penetrating face to its mode.  Never looks at the 4^n strings; time
-   O(n^2 log n + n F), F the number of non-penetrating faces (at most
-   O(n^2), and few when many fixels touch).  M may hold an earlier result
-   (it is replaced).  Returns WC_OK (M filled) or WC_EINPUT when
+   the 2n planes J_k . nu = 0 in R^3 that lie in the cone K of
+   non-penetrating twists (v_in >= 0 on every touching fixel), mapping
+   each to its mode: K first (one 3-D conversion of the touching rows),
+   then only the planes meeting K beyond the origin are arranged, inside
+   K.  Never looks at the 4^n strings, nor at the O(n^2) faces outside K;
+   time one conversion plus O(n g) for K's g generators, O(L^2 log L) for
+   the L planes meeting K, and O(n) per face inside K.  Each mode's
+   witness is a point of the first face mapping to it in the walk of the
+   whole arrangement (modeswalk.c).  M may hold an earlier result (it is
+   replaced).  Returns WC_OK (M filled) or WC_EINPUT when
    wc_problem_check fails or P has more than WC_MODES_MAX_FIXELS fixels
    (the output alone can be O(n^3) bytes).  */
 #define WC_MODES_MAX_FIXELS 500

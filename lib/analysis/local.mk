@@ -8,6 +8,7 @@ lib_libwc_la_SOURCES += \
 	lib/analysis/paper.c \
 	lib/analysis/trace.c \
 	lib/analysis/kinematics.c \
+	lib/analysis/modeswalk.c \
 	lib/analysis/push.c \
 	lib/analysis/stabmodel.c \
 	lib/analysis/facesys.c \
@@ -31,6 +32,7 @@ wcanalysis_HEADERS = \
 	lib/analysis/plan.h
 noinst_HEADERS += \
 	lib/analysis/planparts.h \
+	lib/analysis/modeswalk.h \
 	lib/analysis/stabmodel.h \
 	lib/analysis/facesys.h \
 	lib/analysis/setcert.h \
