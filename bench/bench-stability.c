@@ -31,7 +31,10 @@
    the one-sided cradle: wc_wrench_cone(.., WC_METHOD_DIRECT, ..) for
    every string of {s,l,r,n}^t except n..n, counting the nonempty cones,
    for t = 1, 2, .. until one run exceeds LITERAL_LIMIT (default 3 s),
-   next to wc_stability on the same problem.  Where it is affordable
+   next to wc_stability on the same problem; (4) the one-sided cradle at
+   n = 25, 50, 71, 100 (quick: 12, 25): wc_classify's median per call
+   and wc_stability's time, with the growth exponent of each (the
+   least-squares slope of log time against log n).  Where it is affordable
    (cells x cones <= 4e7) the literal union is checked against
    wc_stability's paper set at a point of every cell; wc_classify's
    verdicts are checked against the sets in table (2).  A disagreement
@@ -44,6 +47,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <math.h>
 
 #include <flint/flint.h>
 #include <flint/fmpz.h>
@@ -224,6 +228,25 @@ print_classify_row(const char * fam, slong n, slong t, int cert,
     fflush(stdout);
 }
 
+/* The least-squares slope of log y against log x over k points.  */
+static double
+growth(const double * x, const double * y, int k)
+{
+    double sx = 0, sy = 0, sxx = 0, sxy = 0, lx, ly;
+    int i;
+
+    for (i = 0; i < k; i++)
+    {
+        lx = log(x[i]);
+        ly = log(y[i]);
+        sx += lx;
+        sy += ly;
+        sxx += lx * lx;
+        sxy += lx * ly;
+    }
+    return (k * sxy - sx * sy) / (k * sxx - sx * sx);
+}
+
 /* Mean seconds per wc_stability over repeated runs of at least budget
    (one run when it alone takes longer); the last result stays in S.  */
 static double
@@ -377,6 +400,12 @@ main(int argc, char ** argv)
     const slong * csizes = quick ? csizes_quick : csizes_full;
     slong ncsizes = quick ? 2 : 4, smax = quick ? 8 : 12, n, t, i;
     double classify50[NFAM], classify50_median[NFAM], stab12[NFAM];
+    static const slong scale_full[] = { 25, 50, 71, 100 };
+    static const slong scale_quick[] = { 12, 25 };
+    const slong * scale = quick ? scale_quick : scale_full;
+    slong nscale = quick ? 2 : 4;
+    double scale_n[4], scale_cls[4], scale_stab[4];
+    double cradle50 = -1, stab100 = -1;
     double pass_lit = 0, pass_stab = 0;
     slong pass_t = 0;
     int fam, bad = 0;
@@ -522,6 +551,42 @@ main(int argc, char ** argv)
             break;
     }
 
+    /* (4) the cradle at scale: classify and stability as t grows.  */
+    printf("\n(4) the one-sided cradle at scale (n = t): wc_classify, median "
+           "ms per call over the 4\n    wrenches; wc_stability, ms per "
+           "call; growth exponents (least-squares slope of\n    log time "
+           "vs log n)\n");
+    printf("%4s %12s %13s %7s\n", "n", "classify ms", "stability ms",
+           "cells");
+    for (i = 0; i < nscale; i++)
+    {
+        wc_problem_t P;
+        wc_stability_t S;
+        classify_cell c;
+
+        n = scale[i];
+        wc_problem_init(P);
+        wc_stability_init(S);
+        make_problem(P, FAM_ONESIDED, n);
+        time_classify(&c, P, 0, budget);
+        scale_cls[i] = c.median;
+        scale_stab[i] = time_stability(S, P, budget);
+        scale_n[i] = (double) n;
+        printf("%4ld %12.3f %13.3f %7ld\n", (long) n, 1e3 * c.median,
+               1e3 * scale_stab[i], (long) S->cells->count);
+        fflush(stdout);
+        if (n == 50)
+            cradle50 = c.median;
+        if (n == 100)
+            stab100 = scale_stab[i];
+        wc_stability_clear(S);
+        wc_problem_clear(P);
+    }
+    printf("growth exponent, n = %ld..%ld: classify %.2f, stability %.2f\n",
+           (long) scale[0], (long) scale[nscale - 1],
+           growth(scale_n, scale_cls, (int) nscale),
+           growth(scale_n, scale_stab, (int) nscale));
+
     /* The targets.  */
     printf("\nTargets:\n");
     for (fam = 0; fam < NFAM; fam++)
@@ -535,6 +600,14 @@ main(int argc, char ** argv)
             printf("  stability, n = 12, %-15s %8.3f ms  (target < 1 s): "
                    "%s\n", family_name[fam], 1e3 * stab12[fam],
                    stab12[fam] < 1.0 ? "met" : "NOT met");
+    if (cradle50 >= 0)
+        printf("  classify, n = 50, one-sided cradle, median %8.3f ms  "
+               "(target < 20 ms): %s\n", 1e3 * cradle50,
+               cradle50 < 0.02 ? "met" : "NOT met");
+    if (stab100 >= 0)
+        printf("  stability, n = 100, one-sided cradle, %8.3f ms  (target "
+               "< 5 s): %s\n", 1e3 * stab100, stab100 < 5.0 ? "met"
+               : "NOT met");
     if (pass_t > 0)
         printf("  literal eq. 19 passes 1 s at t = %ld: %.3f ms, against "
                "wc_stability %.3f ms (%.0fx)\n", (long) pass_t,

@@ -32,6 +32,7 @@ C_TESTS = \
 	tests/t-cells \
 	tests/t-push \
 	tests/t-stability \
+	tests/t-facesep \
 	tests/t-refplan \
 	tests/t-plan \
 	tests/t-plansound \

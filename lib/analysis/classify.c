@@ -178,10 +178,12 @@ visit_face(void * p, const char * y, int rot)
 }
 
 /* Every moving face; *paper_found when one other than n..n moves (then
-   R->paper is its first motion).  */
+   R->paper is its first motion).  T: the modes when every fixel touches
+   (the touching fixels' modes, enumerated once for both uses), or NULL.  */
 static int
 classify_moving(wc_classify_t R, int * paper_found,
-                const _wc_stab_model * m, int certificates, wc_error_t err)
+                const _wc_stab_model * m, int certificates,
+                const wc_modes_struct * T, wc_error_t err)
 {
     face_ctx c;
     slong n = m->n, i;
@@ -206,7 +208,8 @@ classify_moving(wc_classify_t R, int * paper_found,
     c.m = m;
     c.certificates = certificates;
     c.err = err;
-    status = _wc_stab_moving_faces(m, visit_face, &c, err);
+    status = T != NULL ? _wc_stab_moving_faces_of(m, T, visit_face, &c, err)
+        : _wc_stab_moving_faces(m, visit_face, &c, err);
     /* The faces other than n..n come first: a motion of one holds g in
        W(y).  */
     if (status == WC_OK && R->nmotions > 0
@@ -467,11 +470,12 @@ search_modes(strlist * L, slong max, memo * M, const _wc_stab_model * m,
     return r;
 }
 
+/* T: the problem's modes, or NULL to enumerate them here.  */
 static int
 classify_modes(wc_classify_t R, const _wc_stab_model * m, slong max,
-               wc_error_t err)
+               const wc_modes_struct * T, wc_error_t err)
 {
-    wc_modes_t T;
+    wc_modes_t own;
     strlist L = { NULL, 0, 0 };
     fmpq nudot[3];
     fmpq * c = _fmpq_vec_init(2 * m->n + 1);
@@ -481,8 +485,14 @@ classify_modes(wc_classify_t R, const _wc_stab_model * m, slong max,
 
     for (k = 0; k < 3; k++)
         fmpq_init(nudot + k);
-    wc_modes_init(T);
-    status = wc_modes_enumerate(T, m->P, err);
+    wc_modes_init(own);
+    if (T == NULL)
+    {
+        status = wc_modes_enumerate(own, m->P, err);
+        T = own;
+    }
+    else
+        status = WC_OK;
     R->modes_complete = 1;
     for (i = 0; i < T->count && status == WC_OK && R->modes_complete; i++)
     {
@@ -524,7 +534,7 @@ classify_modes(wc_classify_t R, const _wc_stab_model * m, slong max,
     for (i = 0; i < L.len; i++)
         free(L.s[i]);
     free(L.s);
-    wc_modes_clear(T);
+    wc_modes_clear(own);
     for (k = 0; k < 3; k++)
         fmpq_clear(nudot + k);
     _fmpq_vec_clear(c, 2 * m->n + 1);
@@ -537,8 +547,9 @@ wc_classify(wc_classify_t R, const wc_problem_t P, const fmpq * g,
             int certificates, slong max_modes, wc_error_t err)
 {
     _wc_stab_model m;
+    wc_modes_t T;
     slong n;
-    int status, paper_found = 0;
+    int status, paper_found = 0, shared_modes;
 
     wc_classify_clear(R);
     wc_classify_init(R);
@@ -554,10 +565,17 @@ wc_classify(wc_classify_t R, const wc_problem_t P, const fmpq * g,
     _wc_motion_clear(&R->paper, 0);
     _wc_motion_init(&R->paper, n);
     _wc_qvec_set(R->g, g, 3);
+    /* When every fixel touches, the moving faces and the modes come from
+       one enumeration.  */
+    wc_modes_init(T);
+    shared_modes = m.t == n && n > 0;
 
     if ((status = classify_weak(R, &m, err)) == WC_OK
+        && (!shared_modes
+            || (status = wc_modes_enumerate(T, P, err)) == WC_OK)
         && (status = classify_moving(R, &paper_found, &m, certificates,
-                                     err)) == WC_OK)
+                                     shared_modes ? T : NULL, err))
+        == WC_OK)
     {
         R->strong = R->weak && R->nmotions == 0;
         status = classify_paper(R, &paper_found, &m, err);
@@ -566,8 +584,10 @@ wc_classify(wc_classify_t R, const wc_problem_t P, const fmpq * g,
     {
         R->strong_paper = !paper_found;
         R->paper_vacuous = (m.t == 0);
-        status = classify_modes(R, &m, max_modes, err);
+        status = classify_modes(R, &m, max_modes, shared_modes ? T : NULL,
+                                err);
     }
+    wc_modes_clear(T);
     _wc_stab_model_clear(&m);
     return status;
 }

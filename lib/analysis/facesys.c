@@ -281,6 +281,9 @@ zero_face_solve(fmpq * z, const facesys * s, const _wc_stab_model * m,
     return r;
 }
 
+static int face_separate(const facesys * s, const _wc_stab_model * m,
+                         const fmpq * g, wc_error_t err);
+
 int
 _wc_face_solve(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
                const _wc_stab_model * m, const char * y, const char * x,
@@ -365,6 +368,9 @@ _wc_face_solve_cone(fmpq * nudot, fmpq * c, fmpq ** mult, slong * nmult,
     }
     else if (ng == 1 && mult == NULL && quick_motion(z, &s, m, g))
         r = 1;
+    else if (ng == 1 && mult == NULL
+             && (r = face_separate(&s, m, g, err)) != 0)
+        r = r > 0 ? 0 : -1;
     else
     {
         if (mult != NULL)
@@ -531,6 +537,332 @@ _wc_face_facet_mult(fmpq ** mult, slong * nmult, const _wc_stab_model * m,
     }
     else
         _fmpq_vec_clear(v, s.rows);
+    facesys_clear(&s);
+    return r;
+}
+
+/* ---------------------------------------------------------------------
+   A quick proof that a face has no motion for one wrench g.  The closure
+   of the face's motions, cl V = { u : the = rows, the > and >= rows as
+   >= } (on nudot), is a line or a wedge in a plane whenever an = row is
+   there -- always when the face loads a fixel.  Its generators u_k, mapped
+   by M, and the -w_j generate the closed cone cl W of the wrenches the
+   face holds; when g is outside it, the 3-D simplex separates g by a
+   plane h, and facet_mult turns h into Motzkin multipliers checked
+   against every row of the system.  The answer is then "no motion",
+   exactly what the LP would say; in every other case (g in cl W, no =
+   row) the LP decides.  For the cradle's rotation faces this replaces an
+   LP of 2t + 4 columns by two 3-D simplex runs.  */
+
+/* The closed 2-D cone in the plane e . u = 0: its state and up to four
+   generators (3-vectors in the plane).  */
+enum { W_FULL, W_HALF, W_LINE, W_WEDGE, W_RAY, W_ZERO };
+
+typedef struct
+{
+    int state;
+    fmpq r1[3], r2[3];      /* HALF: r1 the inner normal; LINE: r1; WEDGE:
+                               r1, r2; RAY: r1 */
+    fmpq e[3];              /* the plane's normal */
+    fmpq t[3], d;           /* scratch */
+}
+wedge;
+
+/* c := the projection of r on the plane, times |e|^2.  */
+static void
+wedge_project(fmpq * c, wedge * W, const fmpq * r)
+{
+    slong k;
+
+    _fmpq_vec_dot(&W->d, W->e, r, 3);
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_mul(c + k, W->e + k, &W->d);
+        fmpq_neg(c + k, c + k);
+    }
+    _fmpq_vec_dot(&W->d, W->e, W->e, 3);
+    for (k = 0; k < 3; k++)
+        fmpq_addmul(c + k, r + k, &W->d);
+}
+
+/* out := +-(e x c), the sign making s . out > 0 (s . (e x c) != 0).  */
+static void
+wedge_boundary(fmpq * out, wedge * W, const fmpq * c, const fmpq * s)
+{
+    slong k;
+
+    _wc_qvec3_cross(out, W->e, c);
+    _fmpq_vec_dot(&W->d, s, out, 3);
+    if (fmpq_sgn(&W->d) < 0)
+        for (k = 0; k < 3; k++)
+            fmpq_neg(out + k, out + k);
+}
+
+/* Cut the cone by r . u >= 0.  */
+static void
+wedge_cut(wedge * W, const fmpq * r)
+{
+    fmpq c[3], b[3];
+    fmpq_t s1, s2;
+    slong k;
+
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_init(c + k);
+        fmpq_init(b + k);
+    }
+    fmpq_init(s1);
+    fmpq_init(s2);
+    wedge_project(c, W, r);
+    if (_wc_qvec_is_zero(c, 3) || W->state == W_ZERO)
+        ;
+    else if (W->state == W_FULL)
+    {
+        _wc_qvec_set(W->r1, c, 3);
+        W->state = W_HALF;
+    }
+    else if (W->state == W_HALF)
+    {
+        _wc_qvec3_cross(b, W->r1, c);
+        _fmpq_vec_dot(s1, W->r1, c, 3);
+        if (!_wc_qvec_is_zero(b, 3))
+        {
+            /* two rays: e x r1 turned into c >= 0, e x c into r1 >= 0 */
+            _wc_qvec_set(b, W->r1, 3);
+            wedge_boundary(W->r1, W, b, c);
+            wedge_boundary(W->r2, W, c, b);
+            W->state = W_WEDGE;
+        }
+        else if (fmpq_sgn(s1) < 0)
+        {
+            _wc_qvec3_cross(b, W->e, W->r1);
+            _wc_qvec_set(W->r1, b, 3);
+            W->state = W_LINE;
+        }
+    }
+    else
+    {
+        _fmpq_vec_dot(s1, r, W->r1, 3);
+        _fmpq_vec_dot(s2, r, W->r2, 3);
+        if (W->state == W_LINE && fmpq_sgn(s1) != 0)
+        {
+            if (fmpq_sgn(s1) < 0)
+                for (k = 0; k < 3; k++)
+                    fmpq_neg(W->r1 + k, W->r1 + k);
+            W->state = W_RAY;
+        }
+        else if (W->state == W_RAY && fmpq_sgn(s1) < 0)
+            W->state = W_ZERO;
+        else if (W->state == W_WEDGE && (fmpq_sgn(s1) < 0 || fmpq_sgn(s2) < 0))
+        {
+            if (fmpq_sgn(s1) <= 0 && fmpq_sgn(s2) <= 0)
+            {
+                /* both sides out (or on the line): what is left */
+                W->state = fmpq_sgn(s1) == 0 ? W_RAY
+                    : fmpq_sgn(s2) == 0 ? W_RAY : W_ZERO;
+                if (fmpq_sgn(s1) != 0)
+                    _wc_qvec_set(W->r1, W->r2, 3);
+            }
+            else
+            {
+                /* one ray out: it moves to the line r . u = 0,
+                   s_in r_out - s_out r_in */
+                fmpq * in = fmpq_sgn(s1) < 0 ? W->r2 : W->r1;
+                fmpq * out = fmpq_sgn(s1) < 0 ? W->r1 : W->r2;
+                fmpq * si = fmpq_sgn(s1) < 0 ? s2 : s1;
+                fmpq * so = fmpq_sgn(s1) < 0 ? s1 : s2;
+
+                for (k = 0; k < 3; k++)
+                {
+                    fmpq_mul(out + k, out + k, si);
+                    fmpq_submul(out + k, in + k, so);
+                }
+            }
+        }
+    }
+    for (k = 0; k < 3; k++)
+    {
+        fmpq_clear(c + k);
+        fmpq_clear(b + k);
+    }
+    fmpq_clear(s1);
+    fmpq_clear(s2);
+}
+
+/* G := the generators of the cone W (in R^3); their number.  */
+static slong
+wedge_gens(fmpq * G, wedge * W)
+{
+    slong i, k = 0;
+
+    switch (W->state)
+    {
+    case W_FULL:
+        /* e x a and e x (e x a), a an axis not along e */
+        _wc_qvec_zero(W->t, 3);
+        fmpq_one(W->t + (fmpq_is_zero(W->e + 1) && fmpq_is_zero(W->e + 2)
+                         ? 1 : 0));
+        _wc_qvec3_cross(W->r1, W->e, W->t);
+        _wc_qvec3_cross(W->r2, W->e, W->r1);
+        k = 4;
+        break;
+    case W_HALF:
+        _wc_qvec3_cross(W->r2, W->e, W->r1);
+        _wc_qvec_set(G, W->r1, 3);
+        _wc_qvec_set(G + 3, W->r2, 3);
+        for (i = 0; i < 3; i++)
+            fmpq_neg(G + 6 + i, W->r2 + i);
+        return 3;
+    case W_LINE:
+        _wc_qvec_set(G, W->r1, 3);
+        for (i = 0; i < 3; i++)
+            fmpq_neg(G + 3 + i, W->r1 + i);
+        return 2;
+    case W_WEDGE:
+        _wc_qvec_set(G, W->r1, 3);
+        _wc_qvec_set(G + 3, W->r2, 3);
+        return 2;
+    case W_RAY:
+        _wc_qvec_set(G, W->r1, 3);
+        return 1;
+    default:
+        return 0;
+    }
+    /* the full plane: +-r1, +-r2 */
+    _wc_qvec_set(G, W->r1, 3);
+    _wc_qvec_set(G + 3, W->r2, 3);
+    for (i = 0; i < 3; i++)
+    {
+        fmpq_neg(G + 6 + i, W->r1 + i);
+        fmpq_neg(G + 9 + i, W->r2 + i);
+    }
+    return k;
+}
+
+/* G (room for 4 + e generators) := M times the generators of cl V, then
+   the -w_j; *k their number.  0 when the face has no = row on nudot.  */
+static int
+closure_gens(fmpq * G, slong * k, const facesys * s,
+             const _wc_stab_model * m)
+{
+    slong nmot = s->rows - 3 - s->e - 1, r, i, j, kk = 0;
+    const fmpq * e1 = NULL, * row;
+    fmpq_t q;
+    wedge W;
+    int rank = 0, sg, ok;
+
+    fmpq_init(q);
+    fmpq_init(&W.d);
+    for (i = 0; i < 3; i++)
+    {
+        fmpq_init(W.r1 + i);
+        fmpq_init(W.r2 + i);
+        fmpq_init(W.e + i);
+        fmpq_init(W.t + i);
+    }
+    /* the = rows: rank 1 (W.e their normal) or 2 (W.t their line) or 3 */
+    for (r = 0; r < nmot && rank < 3; r++)
+    {
+        row = s->A->rows[3 + r];
+        if (s->rel[3 + r] != WC_REL_EQ || _wc_qvec_is_zero(row, 3))
+            continue;
+        if (rank == 0)
+        {
+            e1 = row;
+            rank = 1;
+            continue;
+        }
+        if (rank == 1)
+        {
+            _wc_qvec3_cross(W.t, e1, row);
+            rank = _wc_qvec_is_zero(W.t, 3) ? 1 : 2;
+            continue;
+        }
+        _fmpq_vec_dot(q, W.t, row, 3);
+        rank = fmpq_is_zero(q) ? 2 : 3;
+    }
+    if (rank == 2)
+        for (sg = 1; sg >= -1; sg -= 2)
+        {
+            for (r = 0, ok = 1; r < nmot && ok; r++)
+            {
+                if (s->rel[3 + r] == WC_REL_EQ)
+                    continue;
+                _fmpq_vec_dot(q, s->A->rows[3 + r], W.t, 3);
+                ok = fmpq_sgn(q) * sg >= 0;
+            }
+            for (i = 0; i < 3 && ok; i++)
+                fmpq_mul_si(G + 3 * kk + i, W.t + i, sg);
+            kk += ok;
+        }
+    else if (rank == 1)
+    {
+        _wc_qvec_set(W.e, e1, 3);
+        W.state = W_FULL;
+        for (r = 0; r < nmot && W.state != W_ZERO; r++)
+            if (s->rel[3 + r] != WC_REL_EQ)
+                wedge_cut(&W, s->A->rows[3 + r]);
+        kk = wedge_gens(G, &W);
+    }
+    for (j = 0; j < kk; j++)
+        for (i = 0; i < 3; i++)
+            fmpq_mul(G + 3 * j + i, G + 3 * j + i, m->M + i);
+    for (j = 0; j < s->e; j++, kk++)
+        for (i = 0; i < 3; i++)
+            fmpq_set(G + 3 * kk + i, fmpq_mat_entry(s->A, i, 3 + j));
+    *k = kk;
+    fmpq_clear(q);
+    fmpq_clear(&W.d);
+    for (i = 0; i < 3; i++)
+    {
+        fmpq_clear(W.r1 + i);
+        fmpq_clear(W.r2 + i);
+        fmpq_clear(W.e + i);
+        fmpq_clear(W.t + i);
+    }
+    return rank > 0;
+}
+
+/* 1 when the multipliers of facet_mult, from the plane separating g
+   from cl W, prove that the face (one wrench g, s's last column) has no
+   motion; 0 when this cannot tell; -1 on failure (err set).  */
+static int
+face_separate(const facesys * s, const _wc_stab_model * m, const fmpq * g,
+              wc_error_t err)
+{
+    slong k = 0, i, cap = 4 + s->e;
+    fmpq * G = _fmpq_vec_init(3 * cap), * lam = _fmpq_vec_init(cap);
+    fmpq * y = _fmpq_vec_init(s->rows);
+    fmpq sep[3];
+    int r = 0;
+
+    for (i = 0; i < 3; i++)
+        fmpq_init(sep + i);
+    if (closure_gens(G, &k, s, m))
+    {
+        r = _wc_lp_cone3(lam, sep, G, k, g, err);
+        if (r == 0)
+            r = facet_mult(y, s, m, sep, 1, err);
+        else if (r == 1)
+            r = 0;
+    }
+    for (i = 0; i < 3; i++)
+        fmpq_clear(sep + i);
+    _fmpq_vec_clear(G, 3 * cap);
+    _fmpq_vec_clear(lam, cap);
+    _fmpq_vec_clear(y, s->rows);
+    return r;
+}
+
+int
+_wc_face_separate(const _wc_stab_model * m, const char * y, const char * x,
+                  int rot, const fmpq * g, wc_error_t err)
+{
+    facesys s;
+    int r;
+
+    facesys_init(&s, m, y, x, rot, g, 1, 0);
+    r = face_separate(&s, m, g, err);
     facesys_clear(&s);
     return r;
 }

@@ -50,4 +50,14 @@ int _wc_face_facet_mult(fmpq ** mult, slong * nmult,
                         const fmpq * h, const fmpq * G, slong ng,
                         wc_error_t err);
 
+/* 1 when a plane separating g from the closure of the face's wrench
+   cone, turned into Motzkin multipliers checked against the face's rows,
+   proves that the face (y, x, rot) has no motion for g; 0 when that
+   cannot tell (g in the closure, or no = row on nudot); -1 on failure
+   (err set).  The quick proof _wc_face_solve tries before an LP, here
+   for the tests.  */
+int _wc_face_separate(const _wc_stab_model * m, const char * y,
+                      const char * x, int rot, const fmpq * g,
+                      wc_error_t err);
+
 #endif

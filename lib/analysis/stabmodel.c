@@ -183,17 +183,15 @@ touching_modes(wc_modes_t T, const _wc_stab_model * m, wc_error_t err)
 }
 
 int
-_wc_stab_moving_faces(const _wc_stab_model * m,
-                      int (* visit)(void * ctx, const char * y, int rot),
-                      void * ctx, wc_error_t err)
+_wc_stab_moving_faces_of(const _wc_stab_model * m, const wc_modes_t T,
+                         int (* visit)(void * ctx, const char * y, int rot),
+                         void * ctx, wc_error_t err)
 {
-    wc_modes_t T;
     slong i;
-    int status, rot;
+    int status = WC_OK, rot;
     char * y;
 
-    wc_modes_init(T);
-    status = touching_modes(T, m, err);
+    (void) err;
     for (i = 0; i < T->count && status == WC_OK; i++)
     {
         _wc_tick("moving faces", i, T->count);
@@ -212,6 +210,21 @@ _wc_stab_moving_faces(const _wc_stab_model * m,
             status = visit(ctx, y, rot);
         free(y);
     }
+    return status;
+}
+
+int
+_wc_stab_moving_faces(const _wc_stab_model * m,
+                      int (* visit)(void * ctx, const char * y, int rot),
+                      void * ctx, wc_error_t err)
+{
+    wc_modes_t T;
+    int status;
+
+    wc_modes_init(T);
+    status = touching_modes(T, m, err);
+    if (status == WC_OK)
+        status = _wc_stab_moving_faces_of(m, T, visit, ctx, err);
     wc_modes_clear(T);
     return status;
 }

@@ -54,6 +54,14 @@ int _wc_stab_moving_faces(const _wc_stab_model * m,
                           int (* visit)(void * ctx, const char * y, int rot),
                           void * ctx, wc_error_t err);
 
+/* The same over T, the modes of the touching fixels alone (as
+   wc_modes_enumerate gives them; when every fixel touches, the
+   problem's own modes).  */
+int _wc_stab_moving_faces_of(const _wc_stab_model * m, const wc_modes_t T,
+                             int (* visit)(void * ctx, const char * y,
+                                           int rot),
+                             void * ctx, wc_error_t err);
+
 /* The full-length string (malloc'd) of touching-only mode s: u on near
    fixels.  */
 char * _wc_stab_expand(const _wc_stab_model * m, const char * s);
