@@ -73,6 +73,9 @@ has marks "$tmp/cone" '    r0    -1  -5      -1   excluded'
 has marks "$tmp/cone" '    r2     1   0      -1   included'
 has marks "$tmp/cone" '    h1    -1   0       1   strict (excluded)'
 has marks "$tmp/cone" '    h0    -5   2      -5   included'
+# In doubles too, the columns are named.
+"$W" cone --arith=double --method=paper "$D/section4.wc" na > "$tmp/dbl" || fail "cone in doubles"
+has double-columns "$tmp/dbl" '                               fx                       fy                   torque'
 # A closed cone: no marks.
 "$W" cone "$D/disk-two-fixels.wc" ss > "$tmp/closed" || fail "cone ss"
 grep -Eq 'excluded$|included$' "$tmp/closed" && grep -v 'dim ' "$tmp/closed" | grep -Eq 'excluded$|included$' \
