@@ -24,15 +24,32 @@
    ambiguous between two of them.  */
 #define CLI_FOREIGN 0x4000
 
-/* --progress's code.  */
+/* --progress's and --decimals's codes.  */
 #define CLI_PROGRESS 0x2000
+#define CLI_DECIMALS 0x2001
 
 static const struct option everyones[] = {
     { "help", no_argument, NULL, 'h' },
     { "version", no_argument, NULL, 'V' },
     { "progress", no_argument, NULL, CLI_PROGRESS },
+    { "decimals", required_argument, NULL, CLI_DECIMALS },
     { NULL, 0, NULL, 0 }
 };
+
+/* --decimals=K: 0 <= K <= WC_DECIMALS_MAX, digits only.  */
+static int
+set_decimals(const char * s)
+{
+    int k = 0;
+    const char * p;
+
+    for (p = s; *p >= '0' && *p <= '9' && k <= WC_DECIMALS_MAX; p++)
+        k = 10 * k + (*p - '0');
+    if (p == s || *p != '\0' || k > WC_DECIMALS_MAX)
+        return 0;
+    wc_print_set_decimals(k);
+    return 1;
+}
 
 static int
 listed(const struct option * table, int n, const char * name)
@@ -96,8 +113,18 @@ cli_option(cli_options * p, int argc, char ** argv)
         return CLI_EXIT;
     }
     while ((c = getopt_long(argc, argv, "hV", p->table, &idx))
-           == CLI_PROGRESS)
-        cli_progress_force();
+           == CLI_PROGRESS || c == CLI_DECIMALS)
+    {
+        if (c == CLI_PROGRESS)
+            cli_progress_force();
+        else if (!set_decimals(optarg))
+        {
+            p->status = cli_usage_error(p->cmd->name, "--decimals wants a "
+                                        "whole number from 0 to 50, not "
+                                        "'%s'", optarg);
+            return CLI_EXIT;
+        }
+    }
     if (c == -1)
         return CLI_DONE;
     if (c >= CLI_FOREIGN)
@@ -167,6 +194,9 @@ cli_operands_last(int * pargc, char ** argv, const struct option * opts,
     for (i = 1; opt != NULL && ops != NULL && i < argc; i++)
     {
         const struct option * o = named(opts, argv[i]);
+
+        if (o == NULL)
+            o = named(everyones, argv[i]);
 
         if (strcmp(argv[i], "--") == 0)
         {

@@ -57,10 +57,10 @@ print_bias_text(const _wc_answer * a)
     {
         if (i)
             fputs(", ", stdout);
-        wc_fprint_fmpq(stdout, a->b + i);
+        wc_fprint_fmpq_text(stdout, a->b + i);
     }
     fputs("), disturbances measured by max(|fx|, |fy|, |tau| / ", stdout);
-    wc_fprint_fmpq(stdout, a->L);
+    wc_fprint_fmpq_text(stdout, a->L);
     fputs("):\n", stdout);
     for (i = 0; i < 2; i++)
         if (a->infinite[i])
@@ -73,7 +73,7 @@ print_bias_text(const _wc_answer * a)
         else
         {
             printf("  %s: rho = ", names[i]);
-            wc_fprint_fmpq(stdout, a->rho[i]);
+            wc_fprint_fmpq_text(stdout, a->rho[i]);
             printf(": every disturbance d with ||d|| %s rho leaves b + d "
                    "strongly stable%s\n", a->closed[i] ? "<=" : "<",
                    a->closed[i] ? "" : " (some d with ||d|| = rho does not)");
@@ -193,7 +193,7 @@ cmd_stability(const cli_command * self, int argc, char ** argv)
             _wc_answer_fprint_json(stdout, &A);
         else
         {
-            wc_stability_fprint(stdout, A.S, 0);
+            wc_stability_fprint_text(stdout, A.S, A.P);
             if (R.biased)
                 print_bias_text(&A);
         }

@@ -347,7 +347,7 @@ print_critical_text(const wc_critical_struct * C, const wc_plan_struct * H,
     else
     {
         fputs("  lo = ", stdout);
-        wc_fprint_fmpq(stdout, C->lo);
+        wc_fprint_fmpq_text(stdout, C->lo);
         fputs(": G_goal is not empty; g = ", stdout);
         wc_fprint_qvec(stdout, C->lo_witness, 3, 0);
         fputs(" is in the cone of no needed string\n", stdout);
@@ -355,12 +355,12 @@ print_critical_text(const wc_critical_struct * C, const wc_plan_struct * H,
     if (!C->found)
     {
         fputs("  G_goal is not empty at any mu <= ", stdout);
-        wc_fprint_fmpq(stdout, max);
+        wc_fprint_fmpq_text(stdout, max);
         printf(" (%ld plans)\n", (long) C->evals);
         return;
     }
     fputs("  hi = ", stdout);
-    wc_fprint_fmpq(stdout, C->hi);
+    wc_fprint_fmpq_text(stdout, C->hi);
     fputs(": G_goal is empty; the cones of", stdout);
     for (k = 0; k < H->T->nneeded; k++)
         if (H->exact_needed[k])
@@ -373,9 +373,9 @@ print_critical_text(const wc_critical_struct * C, const wc_plan_struct * H,
         fmpq_init(w);
         fmpq_sub(w, C->hi, C->lo);
         fputs("  hi - lo = ", stdout);
-        wc_fprint_fmpq(stdout, w);
+        wc_fprint_fmpq_text(stdout, w);
         fputs(" <= ", stdout);
-        wc_fprint_fmpq(stdout, width);
+        wc_fprint_fmpq_text(stdout, width);
         printf(" (%ld plans)\n", (long) C->evals);
         fmpq_clear(w);
     }
@@ -387,7 +387,7 @@ print_answer(const answer * a, const wc_problem_t P, const sweep_options * o)
     slong i;
 
     if (o->json)
-        fputs("{\"sweep\": [", stdout);
+        fputs(WC_JSON_OPEN "\"sweep\": [", stdout);
     for (i = 0; i < a->n; i++)
     {
         if (o->json && i)

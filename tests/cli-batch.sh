@@ -59,7 +59,7 @@ record() {
         file=$(jstr "${line%%: *}")
         msg=${line#*: } ;;
     esac
-    printf '{"error": {"message": %s, "file": %s, "line": %s, "column": %s, "status": %s}}\n' \
+    printf '{"format": "wrenchcone-json/1", "error": {"message": %s, "file": %s, "line": %s, "column": %s, "status": %s}}\n' \
         "$(jstr "$msg")" "$file" "$l" "$c" "$1"
 }
 
@@ -200,19 +200,19 @@ st=$?
 [ $st -eq 2 ] || fail "malformed lines: exit status $st, want 2"
 B=$tmp/bad.jsonl
 cat > "$tmp/want" <<EOF
-{"error": {"message": "unexpected end of input", "file": "$B", "line": 1, "column": 64, "status": 2}}
-{"error": {"message": "a request is a JSON object, not an array", "file": "$B", "line": 3, "column": 1, "status": 2}}
-{"error": {"message": "unknown command 'draw' (cone, modes, feasible, classify, stability, plan or compare)", "file": "$B", "line": 4, "column": 13, "status": 2}}
-{"error": {"message": "\"witness\" is not a key of a cone request", "file": "$B", "line": 5, "column": 66, "status": 2}}
-{"error": {"message": "a cone request needs \"mode\"", "file": "$B", "line": 6, "column": 1, "status": 2}}
-{"error": {"message": "\"mode\" takes a string", "file": "$B", "line": 7, "column": 60, "status": 2}}
-{"error": {"message": "the request needs \"problem\" (a file) or \"problem_text\"", "file": "$B", "line": 8, "column": 1, "status": 2}}
-{"error": {"message": "a request reads no standard input: give \"problem_text\"", "file": "$B", "line": 9, "column": 32, "status": 2}}
-{"error": {"message": "\"wrench\" takes three numbers [FX, FY, TAU]", "file": "$B", "line": 10, "column": 66, "status": 2}}
-{"error": {"message": "unknown method 'fast' (direct or paper)", "file": "$B", "line": 11, "column": 76, "status": 2}}
-{"fixels": 2, "modes": ["la", "ls", "na", "ns", "ra", "rs", "sa", "ss"], "count": 8}
-{"error": {"message": "unknown keyword 'bogus'", "file": "<problem_text>", "line": 2, "column": 1, "status": 1}}
-{"error": {"message": "unexpected 't' after the JSON value", "file": "$B", "line": 14, "column": 53, "status": 2}}
+{"format": "wrenchcone-json/1", "error": {"message": "unexpected end of input", "file": "$B", "line": 1, "column": 64, "status": 2}}
+{"format": "wrenchcone-json/1", "error": {"message": "a request is a JSON object, not an array", "file": "$B", "line": 3, "column": 1, "status": 2}}
+{"format": "wrenchcone-json/1", "error": {"message": "unknown command 'draw' (cone, modes, feasible, classify, stability, plan or compare)", "file": "$B", "line": 4, "column": 13, "status": 2}}
+{"format": "wrenchcone-json/1", "error": {"message": "\"witness\" is not a key of a cone request", "file": "$B", "line": 5, "column": 66, "status": 2}}
+{"format": "wrenchcone-json/1", "error": {"message": "a cone request needs \"mode\"", "file": "$B", "line": 6, "column": 1, "status": 2}}
+{"format": "wrenchcone-json/1", "error": {"message": "\"mode\" takes a string", "file": "$B", "line": 7, "column": 60, "status": 2}}
+{"format": "wrenchcone-json/1", "error": {"message": "the request needs \"problem\" (a file) or \"problem_text\"", "file": "$B", "line": 8, "column": 1, "status": 2}}
+{"format": "wrenchcone-json/1", "error": {"message": "a request reads no standard input: give \"problem_text\"", "file": "$B", "line": 9, "column": 32, "status": 2}}
+{"format": "wrenchcone-json/1", "error": {"message": "\"wrench\" takes three numbers [FX, FY, TAU]", "file": "$B", "line": 10, "column": 66, "status": 2}}
+{"format": "wrenchcone-json/1", "error": {"message": "unknown method 'fast' (direct or paper)", "file": "$B", "line": 11, "column": 76, "status": 2}}
+{"format": "wrenchcone-json/1", "fixels": 2, "modes": ["la", "ls", "na", "ns", "ra", "rs", "sa", "ss"], "count": 8}
+{"format": "wrenchcone-json/1", "error": {"message": "unknown keyword 'bogus'", "file": "<problem_text>", "line": 2, "column": 1, "status": 1}}
+{"format": "wrenchcone-json/1", "error": {"message": "unexpected 't' after the JSON value", "file": "$B", "line": 14, "column": 53, "status": 2}}
 EOF
 if ! cmp -s "$tmp/want" "$tmp/got"; then
     fail "malformed lines:"

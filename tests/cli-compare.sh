@@ -208,7 +208,7 @@ has peg-dimension '^verdict: outside tolerance: dimension differs \(exact 2, flo
 # --- The report as JSON.
 run json-pass 0 --format=json "$s4" na "$tmp/s4.ext"
 has json-pass '"within_tolerance": true, "differences": \[\]\}$'
-has json-pass '^\{"exact": \{"arith": "gmp", "problem": ".*section4.wc", "mode": "na", "empty": false, "dim": 3, "lineality_dim": 0, '
+has json-pass '^\{"format": "wrenchcone-json/1", "exact": \{"arith": "gmp", "problem": ".*section4.wc", "mode": "na", "empty": false, "dim": 3, "lineality_dim": 0, '
 has json-pass '"strictness": "strictness cannot be read from a float cone; check your handling of strict inequalities"'
 has json-pass '"excluded_faces": \[\{"dim": 0, "rays": \[\]\}, \{"dim": 1, "rays": \[0\]\}, \{"dim": 1, "rays": \[1\]\}, \{"dim": 2, "rays": \[0, 1\]\}\]'
 run json-drop 4 --format=json "$s4" na "$tmp/drop.ext"

@@ -93,7 +93,7 @@ has text "  dimension 3, lineality 0, not closed (1 of 3 facets strict)"
 
 run cone --method=paper --arith=double --format=json "$s4" na
 [ "$status" -eq 0 ] || fail json "status $status"
-contains json '{"mode": "na", "cone": {"empty": false, "arith": "double", "eps": '
+contains json '{"format": "wrenchcone-json/1", "mode": "na", "cone": {"empty": false, "arith": "double", "eps": '
 contains json '"dim": 3, "lineality_dim": 0, "closed": false, "inequalities": [['
 contains json '"strict": [true, false, false], "equalities": [], "rays": [['
 contains json '"strict_rays": [true, true, false], "lines": []}}'
@@ -122,7 +122,7 @@ printf 'fixel 0 0 normal 0 1 near\nfixel 0 2 normal 0 -1 near\n' >"$tmp/q.wc"
 run cone --method=paper --format=json "$tmp/q.wc" aa
 grep -qF '{"empty": true}' "$tmp/out" || fail empty "the exact cone of aa is not empty"
 run cone --method=paper --arith=double --format=json "$tmp/q.wc" aa
-has empty '{"mode": "aa", "cone": {"empty": true, "arith": "double", "eps": 1.0000000000000001e-09}}'
+has empty '{"format": "wrenchcone-json/1", "mode": "aa", "cone": {"empty": true, "arith": "double", "eps": 1.0000000000000001e-09}}'
 
 # Bad input is exit 1 with the exact route's diagnostic.
 run cone --method=paper --arith=double "$s4" nx

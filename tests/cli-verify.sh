@@ -195,9 +195,9 @@ run "$certs/bad-letter.json" verify -
 expect stdin-malformed 1 "" \
     "wrenchcone: <stdin>:1:38: letter 'a' not allowed on fixel 1, which is touching"
 run /dev/null verify --format=json "$certs/figure5-ln.json"
-expect json-holds 0 '{"holds": true, "mode": "ln", "feasible": false}' ""
+expect json-holds 0 '{"format": "wrenchcone-json/1", "holds": true, "mode": "ln", "feasible": false}' ""
 run /dev/null verify --format=json "$certs/tampered-witness.json"
-expect json-does-not-hold 4 '{"holds": false, "mode": "ss", "feasible": true, "reason": "the witness (0, 1, 0) violates constraint 2: (-1, 0, 0) . nu = 0, not > 0"}' ""
+expect json-does-not-hold 4 '{"format": "wrenchcone-json/1", "holds": false, "mode": "ss", "feasible": true, "reason": "the witness (0, 1, 0) violates constraint 2: (-1, 0, 0) . nu = 0, not > 0"}' ""
 run /dev/null verify --format=json "$certs/bad-kind.json"
 expect json-malformed 1 "" \
     "wrenchcone: $certs/bad-kind.json:1:10: unknown certificate kind 'stability'"

@@ -129,7 +129,7 @@ cone_line(const wc_problem_t P, const char * mode, wc_method method)
     }
     else if ((f = open_memstream(&buf, &len)) != NULL)
     {
-        fputs("{\"mode\": ", f);
+        fputs(WC_JSON_OPEN "\"mode\": ", f);
         wc_fprint_json_string(f, mode);
         fputs(", \"cone\": ", f);
         wc_cone_fprint_json(f, W);

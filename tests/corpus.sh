@@ -79,7 +79,7 @@ for p in "$C"/*.wc; do
             "$cones" > "$tmp/lines"
     fi
     while IFS= read -r line; do
-        mode=${line#'{"mode": "'}
+        mode=${line#*'"mode": "'}
         mode=${mode%%'"'*}
         if ! "$W" cone --format=json "$p" "$mode" > "$tmp/out" 2> "$tmp/err"; then
             fail "$name: mode $mode: wrenchcone cone failed: $(cat "$tmp/err")"

@@ -61,6 +61,8 @@ if grep -q '^bashcompletion_DATA = completion/wrenchcone' "$top_builddir/Makefil
     c=$(find "$dest" -path '*/completions/wrenchcone' | head -n 1)
     [ -n "$c" ] && cmp -s "$c" "$top_builddir/completion/wrenchcone" \
         || fail "the bash completion is not installed (completions/wrenchcone)"
+    [ -n "$c" ] && cmp -s "$c-verify" "$top_builddir/completion/wrenchcone" \
+        || fail "the bash completion is not installed as completions/wrenchcone-verify"
 fi
 
 # 1. The installed program (it links the library statically: no

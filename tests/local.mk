@@ -37,7 +37,8 @@ C_TESTS = \
 	tests/t-plan \
 	tests/t-plansound \
 	tests/t-draw \
-	tests/t-request
+	tests/t-request \
+	tests/t-decimals
 check_PROGRAMS += $(C_TESTS) tests/corpus-check
 LDADD = $(TEST_LIBS)
 tests_corpus_check_LDADD = lib/libwc.la
@@ -64,7 +65,8 @@ SH_TESTS = \
 	tests/cli-report.sh \
 	tests/dist-files.sh \
 	tests/completion.sh \
-	tests/cli-batch.sh
+	tests/cli-batch.sh \
+	tests/cli-text.sh
 TESTS += $(C_TESTS) $(SH_TESTS)
 TEST_EXTENSIONS = .sh
 SH_LOG_COMPILER = $(SHELL)

@@ -13,6 +13,7 @@
 
 #include "api/run.h"
 #include "core/readall.h"
+#include "core/version.h"
 #include "io/print.h"
 #include "io/fconeprint.h"
 #include "io/compareprint.h"
@@ -325,7 +326,7 @@ fprint_cone_json(FILE * out, const _wc_answer * A)
 {
     const _wc_request * R = A->R;
 
-    fputs("{\"mode\": ", out);
+    fputs(WC_JSON_OPEN "\"mode\": ", out);
     wc_fprint_json_string(out, R->mode);
     fputs(", \"cone\": ", out);
     if (R->arith_double)
@@ -419,7 +420,7 @@ _wc_answer_fprint_json(FILE * out, const _wc_answer * A)
 int
 _wc_error_fprint_json(FILE * out, const wc_error_t err, int status)
 {
-    fputs("{\"error\": {\"message\": ", out);
+    fputs(WC_JSON_OPEN "\"error\": {\"message\": ", out);
     wc_fprint_json_string(out, err->message != NULL ? err->message
                           : "out of memory");
     fputs(", \"file\": ", out);

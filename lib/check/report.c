@@ -14,6 +14,7 @@
 #include <stdlib.h>
 
 #include "core/text.h"
+#include "core/version.h"
 #include "check/verify.h"
 
 /* The JSON verdict.  A mode-feasibility certificate gives its mode and
@@ -32,7 +33,7 @@ put_json(FILE * out, int holds, const char * reason, const char * summary,
         mode = NULL;
     free(r2);
     wc_error_clear(e2);
-    fprintf(out, "{\"holds\": %s", holds ? "true" : "false");
+    fprintf(out, WC_JSON_OPEN "\"holds\": %s", holds ? "true" : "false");
     if (mode != NULL)
     {
         fputs(", \"mode\": ", out);

@@ -24,6 +24,14 @@ const char * wc_gmp_version(void);
 const char * wc_flint_version(void);
 const char * wc_cdd_version(void);
 
+/* Every JSON document the programs print (a command's --format=json, a
+   batch line, an error record, a verdict of verify) opens with the key
+   "format" and this value, the version of wrenchcone(1)'s JSON: it
+   changes only when a key changes meaning or goes away (added keys keep
+   it).  WC_JSON_OPEN is the document's first bytes, up to the next key.  */
+#define WC_JSON_FORMAT "wrenchcone-json/1"
+#define WC_JSON_OPEN "{\"format\": \"" WC_JSON_FORMAT "\", "
+
 #ifdef __cplusplus
 }
 #endif

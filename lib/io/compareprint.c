@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "core/version.h"
 #include "io/compareprint.h"
 #include "io/print.h"
 #include "float/angle.h"
@@ -429,7 +430,7 @@ comparison_fprint_json(FILE * out, const wc_comparison_t R,
 {
     slong i, f;
 
-    fputs("{\"exact\": {\"arith\": \"gmp\", \"problem\": ", out);
+    fputs(WC_JSON_OPEN "\"exact\": {\"arith\": \"gmp\", \"problem\": ", out);
     wc_fprint_json_string(out, problem);
     fputs(", \"mode\": ", out);
     wc_fprint_json_string(out, mode);

@@ -6,6 +6,8 @@
 
 #include <config.h>
 
+#include <string.h>
+
 #include "io/fconeprint.h"
 #include "io/cddwrite.h"
 
@@ -79,8 +81,17 @@ static void
 text_rows_d(FILE * out, const d_mat_t A, const char * tag, const int * f,
             const char * yes, const char * no)
 {
+    static const char * const cols[3] = { "fx", "fy", "torque" };
     slong i, j;
 
+    /* The columns of a wrench (a normal's coefficients of them).  */
+    if (A->r > 0 && A->c == 3)
+    {
+        fprintf(out, "    %*s", (int) strlen(tag) + 3, "");
+        for (j = 0; j < 3; j++)
+            fprintf(out, " %24s", cols[j]);
+        putc('\n', out);
+    }
     for (i = 0; i < A->r; i++)
     {
         fprintf(out, "    %s%-3ld", tag, (long) i);

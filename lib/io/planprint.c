@@ -132,7 +132,7 @@ plan_json(FILE * out, const wc_plan_t R, const slong * ex)
     slong n = T->n, i, k;
     ulong S, full = (UWORD(1) << n) - 1;
 
-    fprintf(out, "{\"fixels\": %ld, \"states\": [", (long) n);
+    fprintf(out, WC_JSON_OPEN "\"fixels\": %ld, \"states\": [", (long) n);
     for (S = 0; S <= full; S++)
     {
         fputs(S ? ", {\"state\": " : "{\"state\": ", out);
@@ -262,7 +262,7 @@ plan_text(FILE * out, const wc_plan_t R, const wc_problem_t P,
 
         fputs("where a frictionless finger seats the part from any "
               "state:\n", out);
-        wc_push_fprint(out, R->push_goal, 0, "  ");
+        wc_push_fprint_text(out, R->push_goal, P, "  ");
         fprintf(out, "  length %.4g of %.4g (floating point, for reading "
                 "only)\n", len, total);
     }
@@ -282,7 +282,7 @@ plan_text(FILE * out, const wc_plan_t R, const wc_problem_t P,
         if (R->has_push_accepted)
         {
             fputs("  where a frictionless finger seats the part:\n", out);
-            wc_push_fprint(out, R->push_accepted, 0, "    ");
+            wc_push_fprint_text(out, R->push_accepted, P, "    ");
         }
     }
 }
@@ -324,7 +324,7 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
 
     if (json)
     {
-        fputs("{\"wrench\": ", out);
+        fputs(WC_JSON_OPEN "\"wrench\": ", out);
         wc_fprint_qvec(out, W->g, 3, 1);
         fprintf(out, ", \"in_goal\": %s, \"holding\": ", _wc_tf(W->in_goal));
         strlist(out, W->holding, NULL, W->nholding, 1);
@@ -437,7 +437,7 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
         return _wc_fprint_done(out);
     }
     fputs("mu = ", out);
-    wc_fprint_fmpq(out, mu);
+    wc_fprint_fmpq_text(out, mu);
     if (G->empty)
         fputs(": G_goal empty", out);
     else
@@ -490,7 +490,7 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
     }
     if (R->has_push)
     {
-        wc_push_fprint(out, R->push_goal, 0, "  push ");
+        wc_push_fprint_text(out, R->push_goal, P, "  push ");
         fprintf(out, "  push length %.4g of %.4g (%.1f%%; floating point, "
                 "for reading only)\n", len, total,
                 total > 0 ? 100 * len / total : 0.0);

@@ -9,6 +9,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <flint/fmpz_vec.h>
+
 #include "exact/vec3.h"
 #include "io/print.h"
 #include "io/printutil.h"
@@ -77,14 +79,23 @@ wc_cone_fprint_json(FILE * out, const wc_cone_t C)
     return _wc_fprint_done(out);
 }
 
-/* Rows of A, right-aligned per column, each line prefixed.  */
+/* The names of the columns of a wrench (and of a facet normal's
+   coefficients), when a matrix has three columns.  */
+static const char * const wrench_cols[3] = { "fx", "fy", "torque" };
+
+/* Rows of A, right-aligned per column under a header naming the columns
+   of a wrench, each line prefixed; mark[i], when mark is not NULL, ends
+   row i.  */
 static void
 text_rows(FILE * out, const fmpz_mat_t A, const char * indent,
-          const char * tag)
+          const char * tag, const char * const * mark)
 {
     slong m = fmpz_mat_nrows(A), d = fmpz_mat_ncols(A), i, j;
     size_t * w = calloc((size_t) d + 1, sizeof(size_t));
+    int named = d == 3;
 
+    for (j = 0; w != NULL && j < d; j++)
+        w[j] = named ? strlen(wrench_cols[j]) + 1 : 0;
     for (i = 0; i < m; i++)
         for (j = 0; j < d; j++)
         {
@@ -93,6 +104,13 @@ text_rows(FILE * out, const fmpz_mat_t A, const char * indent,
             if (w != NULL && l > w[j])
                 w[j] = l;
         }
+    if (m > 0 && named && w != NULL)
+    {
+        fprintf(out, "%s  %*s", indent, (int) (strlen(tag) + 3), "");
+        for (j = 0; j < d; j++)
+            fprintf(out, " %*s", (int) w[j], wrench_cols[j]);
+        putc('\n', out);
+    }
     for (i = 0; i < m; i++)
     {
         fprintf(out, "%s  %s%-3ld", indent, tag, (long) i);
@@ -103,15 +121,84 @@ text_rows(FILE * out, const fmpz_mat_t A, const char * indent,
             fprintf(out, " %*s", w != NULL ? (int) w[j] : 0, s);
             flint_free(s);
         }
+        if (mark != NULL && mark[i] != NULL)
+            fprintf(out, "   %s", mark[i]);
         putc('\n', out);
     }
     free(w);
 }
 
+/* The face of C with dimension dim and exactly the rays whose flag is
+   set in on[0..nrays), or NULL.  */
+static const wc_face_struct *
+find_face(const wc_cone_t C, slong dim, const char * on)
+{
+    slong f, i, k, nr = fmpz_mat_nrows(C->rays);
+
+    for (f = 0; f < C->nfaces; f++)
+    {
+        const wc_face_struct * F = C->faces + f;
+
+        if (F->dim != dim)
+            continue;
+        for (i = 0, k = 0; i < nr; i++)
+            if (on[i] && (k >= F->nrays || F->rays[k++] != i))
+                break;
+        if (i == nr && k == F->nrays)
+            return F;
+    }
+    return NULL;
+}
+
+/* Whether each ray (rows 0..nr) and each facet (rows nr..nr+m) of C is
+   in C: the words that end their lines ("included", "excluded" for a
+   ray; "strict" for a facet whose relative interior is not in C).  NULL
+   when out of memory: the lines then go without them.  */
+static const char **
+row_marks(const wc_cone_t C)
+{
+    slong nr = fmpz_mat_nrows(C->rays), m = fmpz_mat_nrows(C->ineqs), i, j;
+    const char ** mark = calloc((size_t) (nr + m) + 1, sizeof(char *));
+    char * on = calloc((size_t) nr + 1, 1);
+    const wc_face_struct * F;
+    fmpz_t t;
+
+    if (mark == NULL || on == NULL)
+    {
+        free(on);
+        free(mark);
+        return NULL;
+    }
+    fmpz_init(t);
+    for (i = 0; i < nr; i++)
+    {
+        memset(on, 0, (size_t) nr);
+        on[i] = 1;
+        F = find_face(C, C->lineality_dim + 1, on);
+        mark[i] = F == NULL ? NULL : F->included ? "included" : "excluded";
+    }
+    for (i = 0; i < m; i++)
+    {
+        for (j = 0; j < nr; j++)
+        {
+            _fmpz_vec_dot(t, fmpz_mat_entry(C->ineqs, i, 0),
+                          fmpz_mat_entry(C->rays, j, 0), C->d);
+            on[j] = fmpz_is_zero(t);
+        }
+        F = find_face(C, C->dim - 1, on);
+        mark[nr + i] = F == NULL ? NULL : F->included ? "included"
+            : "strict (excluded)";
+    }
+    fmpz_clear(t);
+    free(on);
+    return mark;
+}
+
 int
 wc_cone_fprint_text(FILE * out, const wc_cone_t C, const char * indent)
 {
-    slong f, i, excl;
+    slong f, i, excl, nr;
+    const char ** mark;
 
     if (C->empty)
     {
@@ -120,28 +207,33 @@ wc_cone_fprint_text(FILE * out, const wc_cone_t C, const char * indent)
         return _wc_fprint_done(out);
     }
     excl = wc_cone_excluded_faces(C);
+    nr = fmpz_mat_nrows(C->rays);
+    mark = excl > 0 ? row_marks(C) : NULL;
     fprintf(out, "%sdimension %ld, lineality %ld, %s", indent, (long) C->dim,
             (long) C->lineality_dim, excl == 0 ? "closed" : "not closed");
     if (excl > 0)
         fprintf(out, " (%ld of %ld faces excluded)", (long) excl,
                 (long) C->nfaces);
     putc('\n', out);
-    fprintf(out, "%srays of the closure:%s\n", indent,
-            fmpz_mat_nrows(C->rays) ? "" : " none");
-    text_rows(out, C->rays, indent, "r");
+    fprintf(out, "%srays of the closure%s:%s\n", indent,
+            excl > 0 ? " (excluded: the open ray is not in the cone)" : "",
+            nr ? "" : " none");
+    text_rows(out, C->rays, indent, "r", mark);
     if (C->lineality_dim > 0)
     {
         fprintf(out, "%slines:\n", indent);
-        text_rows(out, C->lines, indent, "l");
+        text_rows(out, C->lines, indent, "l", NULL);
     }
-    fprintf(out, "%sfacets (h . g <= 0):%s\n", indent,
+    fprintf(out, "%sfacets (h . g <= 0%s):%s\n", indent,
+            excl > 0 ? "; strict: h . g < 0 inside the facet" : "",
             fmpz_mat_nrows(C->ineqs) ? "" : " none");
-    text_rows(out, C->ineqs, indent, "h");
+    text_rows(out, C->ineqs, indent, "h", mark != NULL ? mark + nr : NULL);
     if (fmpz_mat_nrows(C->eqs) > 0)
     {
         fprintf(out, "%sequalities (e . g = 0):\n", indent);
-        text_rows(out, C->eqs, indent, "e");
+        text_rows(out, C->eqs, indent, "e", NULL);
     }
+    free(mark);
     fprintf(out, "%sfaces (by their rays):\n", indent);
     for (f = 0; f < C->nfaces; f++)
     {
@@ -248,7 +340,8 @@ wc_modes_fprint(FILE * out, const wc_modes_t M, int json, int witness)
         }
         return _wc_fprint_done(out);
     }
-    fprintf(out, "{\"fixels\": %ld, \"modes\": [", (long) M->n);
+    fprintf(out, WC_JSON_OPEN "\"fixels\": %ld, \"modes\": [",
+            (long) M->n);
     for (i = 0; i < M->count; i++)
     {
         if (i)
@@ -308,7 +401,7 @@ wc_certificate_fprint(FILE * out, const wc_certificate_t C,
                   "transposition theorem)\n", out);
         return _wc_fprint_done(out);
     }
-    fputs("{\"kind\": \"mode-feasibility\", \"mode\": ", out);
+    fputs(WC_JSON_OPEN "\"kind\": \"mode-feasibility\", \"mode\": ", out);
     wc_fprint_json_string(out, C->mode);
     fprintf(out, ", \"feasible\": %s", _wc_tf(C->feasible));
     if (C->feasible)

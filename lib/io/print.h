@@ -25,8 +25,28 @@ extern "C" {
 /* A rational as text, "p/q" or "p" in lowest terms.  */
 void wc_fprint_fmpq(FILE * out, const fmpq_t x);
 
+/* Decimal approximations in text output (wrenchcone(1), --decimals=K):
+   after K is set to 0 <= K <= WC_DECIMALS_MAX, the text writers follow
+   every rational that is not an integer by " (approx. D)", D the rational
+   rounded to K digits after the point, half away from zero, computed
+   exactly (no floating point); K < 0, the default, adds none.  The
+   setting is the calling thread's and leaves JSON, cdd and certificates
+   exact and unchanged.  */
+#define WC_DECIMALS_MAX 50
+void wc_print_set_decimals(int K);
+int wc_print_decimals(void);
+
+/* x rounded to K >= 0 digits after the point, half away from zero:
+   "-0.333" for -1/3 and K = 3, "2" for 5/3 and K = 0.  */
+void wc_fprint_fmpq_decimal(FILE * out, const fmpq_t x, int K);
+
+/* x as text, "p/q", then its approximation when decimals are on and x is
+   not an integer.  */
+void wc_fprint_fmpq_text(FILE * out, const fmpq_t x);
+
 /* A vector of len rationals: "(a, b, c)" as text, or ["a", "b", "c"] as
-   JSON.  */
+   JSON.  As text, when decimals are on and an entry is not an integer,
+   the vector's approximation follows: "(1/3, 1) (approx. (0.333, 1.000))".  */
 void wc_fprint_qvec(FILE * out, const fmpq * v, slong len, int json);
 
 /* s as a JSON string literal, with quotes and escapes.  */
@@ -69,9 +89,18 @@ int wc_set_fprint_json(FILE * out, const wc_set_t S);
 int wc_set_fprint_text(FILE * out, const wc_set_t S, const char * indent);
 int wc_push_fprint(FILE * out, const wc_push_t R, int json,
                    const char * indent);
+/* The pushing regions R as text, as wc_push_fprint, and for a polygon
+   each interval's ends also as points (x, y) of P's boundary.  P is the
+   problem R was computed for, or NULL (no points).  */
+int wc_push_fprint_text(FILE * out, const wc_push_t R, const wc_problem_t P,
+                        const char * indent);
 /* json: 0 text, 1 a JSON object and a newline, 2 the same object left
    open (no closing brace) for the caller to add members to.  */
 int wc_stability_fprint(FILE * out, const wc_stability_t S, int json);
+/* The text of wc_stability_fprint, with the pushing regions' ends as
+   points of P's polygon (P as for wc_push_fprint_text).  */
+int wc_stability_fprint_text(FILE * out, const wc_stability_t S,
+                             const wc_problem_t P);
 
 /* Write the certificate that S->strong is exactly the strongly stable set
    of P (kind "stability-set", wrenchcone-certificate(5)), proving every

@@ -6,6 +6,8 @@
 
 #include <config.h>
 
+#include <string.h>
+
 #include "core/text.h"
 #include "io/print.h"
 #include "io/printutil.h"
@@ -37,6 +39,68 @@ wc_fprint_fmpq(FILE * out, const fmpq_t x)
     flint_free(s);
 }
 
+/* The thread's --decimals; < 0 none.  */
+static _Thread_local int print_decimals = -1;
+
+void
+wc_print_set_decimals(int K)
+{
+    print_decimals = K < 0 ? -1 : K > WC_DECIMALS_MAX ? WC_DECIMALS_MAX : K;
+}
+
+int
+wc_print_decimals(void)
+{
+    return print_decimals;
+}
+
+void
+wc_fprint_fmpq_decimal(FILE * out, const fmpq_t x, int K)
+{
+    fmpz_t n, d;
+    char * s;
+    size_t len;
+
+    if (K < 0)
+        K = 0;
+    fmpz_init(n);
+    fmpz_init(d);
+    /* n = round(|x| 10^K) = floor((2 |p| 10^K + q) / (2 q)).  */
+    fmpz_set_ui(n, 10);
+    fmpz_pow_ui(n, n, (ulong) K);
+    fmpz_mul(n, n, fmpq_numref(x));
+    fmpz_abs(n, n);
+    fmpz_mul_2exp(n, n, 1);
+    fmpz_add(n, n, fmpq_denref(x));
+    fmpz_mul_2exp(d, fmpq_denref(x), 1);
+    fmpz_fdiv_q(n, n, d);
+    s = fmpz_get_str(NULL, 10, n);
+    len = strlen(s);
+    if (fmpq_sgn(x) < 0 && !fmpz_is_zero(n))
+        putc('-', out);
+    if (len <= (size_t) K)      /* 0.00ddd */
+        fprintf(out, "0%s%.*s%s", K ? "." : "", (int) (K - len),
+                "00000000000000000000000000000000000000000000000000", s);
+    else
+        fprintf(out, "%.*s%s%s", (int) (len - K), s, K ? "." : "",
+                s + len - K);
+    flint_free(s);
+    fmpz_clear(d);
+    fmpz_clear(n);
+}
+
+void
+wc_fprint_fmpq_text(FILE * out, const fmpq_t x)
+{
+    wc_fprint_fmpq(out, x);
+    if (print_decimals >= 0 && !fmpz_is_one(fmpq_denref(x)))
+    {
+        fputs(" (approx. ", out);
+        wc_fprint_fmpq_decimal(out, x, print_decimals);
+        putc(')', out);
+    }
+}
+
 void
 _wc_fprint_jq(FILE * out, const fmpq_t x)
 {
@@ -61,6 +125,20 @@ wc_fprint_qvec(FILE * out, const fmpq * v, slong len, int json)
             wc_fprint_fmpq(out, v + j);
     }
     putc(json ? ']' : ')', out);
+    for (j = 0; !json && print_decimals >= 0 && j < len; j++)
+        if (!fmpz_is_one(fmpq_denref(v + j)))
+            break;
+    if (!json && print_decimals >= 0 && j < len)
+    {
+        fputs(" (approx. (", out);
+        for (j = 0; j < len; j++)
+        {
+            if (j)
+                fputs(", ", out);
+            wc_fprint_fmpq_decimal(out, v + j, print_decimals);
+        }
+        fputs("))", out);
+    }
 }
 
 void

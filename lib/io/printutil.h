@@ -16,6 +16,7 @@
 #include <flint/fmpq.h>
 
 #include "core/problem.h"
+#include "core/version.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -22,9 +22,9 @@ text_forces(FILE * out, const fmpq * c, slong n)
         if (!fmpq_is_zero(c + i) || !fmpq_is_zero(c + n + i))
         {
             fprintf(out, "%sfixel %ld (", any ? ", " : "", (long) i + 1);
-            wc_fprint_fmpq(out, c + i);
+            wc_fprint_fmpq_text(out, c + i);
             fputs(", ", out);
-            wc_fprint_fmpq(out, c + n + i);
+            wc_fprint_fmpq_text(out, c + n + i);
             putc(')', out);
             any = 1;
         }
@@ -39,7 +39,7 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
 
     if (json)
     {
-        fputs("{\"wrench\": ", out);
+        fputs(WC_JSON_OPEN "\"wrench\": ", out);
         wc_fprint_qvec(out, R->g, 3, 1);
         fputs(", \"modes\": [", out);
         for (i = 0; i < R->nmodes; i++)
@@ -193,8 +193,51 @@ wc_set_fprint_text(FILE * out, const wc_set_t S, const char * indent)
     return _wc_fprint_done(out);
 }
 
+static int push_fprint(FILE * out, const wc_push_t R,
+                       const wc_problem_struct * P, int json,
+                       const char * indent);
+
+/* The point of edge k of P's polygon at parameter s, as text:
+   v_k + s (v_k+1 - v_k).  */
+static void
+edge_point(FILE * out, const wc_problem_t P, slong k, const fmpq_t s)
+{
+    slong nv = P->shape_len / 2, j;
+    const fmpq * a = P->shape_data + 2 * (k % nv);
+    const fmpq * b = P->shape_data + 2 * ((k + 1) % nv);
+    fmpq q[2];
+
+    for (j = 0; j < 2; j++)
+    {
+        fmpq_init(q + j);
+        fmpq_sub(q + j, b + j, a + j);
+        fmpq_mul(q + j, q + j, s);
+        fmpq_add(q + j, q + j, a + j);
+    }
+    wc_fprint_qvec(out, q, 2, 0);
+    for (j = 0; j < 2; j++)
+        fmpq_clear(q + j);
+}
+
 int
 wc_push_fprint(FILE * out, const wc_push_t R, int json, const char * indent)
+{
+    return json ? push_fprint(out, R, NULL, 1, indent)
+        : push_fprint(out, R, NULL, 0, indent);
+}
+
+int
+wc_push_fprint_text(FILE * out, const wc_push_t R, const wc_problem_t P,
+                    const char * indent)
+{
+    if (P != NULL && (P->shape != WC_SHAPE_POLYGON || P->shape_len < 6))
+        P = NULL;
+    return push_fprint(out, R, P, 0, indent);
+}
+
+static int
+push_fprint(FILE * out, const wc_push_t R, const wc_problem_struct * P,
+            int json, const char * indent)
 {
     slong i;
 
@@ -236,10 +279,18 @@ wc_push_fprint(FILE * out, const wc_push_t R, int json, const char * indent)
         {
             fprintf(out, "%sedge %ld: s in %c", indent, (long) v->edge,
                     v->from_closed ? '[' : '(');
-            wc_fprint_fmpq(out, v->from);
+            wc_fprint_fmpq_text(out, v->from);
             fputs(", ", out);
-            wc_fprint_fmpq(out, v->to);
-            fprintf(out, "%c\n", v->to_closed ? ']' : ')');
+            wc_fprint_fmpq_text(out, v->to);
+            fprintf(out, "%c", v->to_closed ? ']' : ')');
+            if (P != NULL)
+            {
+                fputs(", (x, y) from ", out);
+                edge_point(out, P, v->edge, v->from);
+                fputs(" to ", out);
+                edge_point(out, P, v->edge, v->to);
+            }
+            putc('\n', out);
         }
         else if (v->full)
             fprintf(out, "%sthe whole circle\n", indent);
@@ -261,9 +312,11 @@ wc_push_fprint(FILE * out, const wc_push_t R, int json, const char * indent)
 int
 wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
 {
-    if (json)
+    if (!json)
+        return wc_stability_fprint_text(out, S, NULL);
+    else
     {
-        fputs("{\"weak\": ", out);
+        fputs(WC_JSON_OPEN "\"weak\": ", out);
         wc_cone_fprint_json(out, S->weak);
         fputs(", \"strong\": ", out);
         wc_set_fprint_json(out, S->strong);
@@ -294,6 +347,12 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
             fputs("}\n", out);
         return _wc_fprint_done(out);
     }
+}
+
+int
+wc_stability_fprint_text(FILE * out, const wc_stability_t S,
+                         const wc_problem_t P)
+{
     fputs("weakly stable wrenches (a static solution exists; closed):\n",
           out);
     wc_cone_fprint_text(out, S->weak, "  ");
@@ -332,11 +391,11 @@ wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
     {
         fputs("pushing regions of a frictionless finger:\n  weakly stable:\n",
               out);
-        wc_push_fprint(out, S->push_weak, 0, "    ");
+        wc_push_fprint_text(out, S->push_weak, P, "    ");
         fputs("  strongly stable (exact):\n", out);
-        wc_push_fprint(out, S->push_strong, 0, "    ");
+        wc_push_fprint_text(out, S->push_strong, P, "    ");
         fputs("  strongly stable (paper):\n", out);
-        wc_push_fprint(out, S->push_strong_paper, 0, "    ");
+        wc_push_fprint_text(out, S->push_strong_paper, P, "    ");
     }
     return _wc_fprint_done(out);
 }

@@ -1,0 +1,254 @@
+/* t-decimals.c -- decimal approximations of text output (print.h,
+   --decimals): wc_fprint_fmpq_decimal against a reference written here
+   on GMP's mpz alone (the deliberate independent copy: long division
+   and a digit string, not the library's rounding formula), on hand
+   cases (halves, negatives that round to zero, K = 0 and the maximum)
+   and on seeded random rationals, large and small, for every K; then
+   wc_fprint_fmpq_text and wc_fprint_qvec with decimals on and off.  */
+
+#include <config.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <gmp.h>
+
+#include "wrenchcone.h"
+#include "testutil.h"
+
+/* What f prints to a string (malloc'd).  */
+#define CAPTURE(buf, len, call)                                         \
+    do {                                                                \
+        FILE * f_ = open_memstream(&(buf), &(len));                     \
+        if (f_ == NULL)                                                 \
+            wctest_fail("open_memstream failed");                       \
+        call;                                                           \
+        if (fclose(f_) != 0)                                            \
+            wctest_fail("fclose failed");                               \
+    } while (0)
+
+/* x = p/q rounded to K digits, half away from zero, by long division:
+   integer part, then K digits, then the next digit and the remainder
+   decide the rounding, carried through the digit string.  */
+static char *
+reference(const fmpq_t x, int K)
+{
+    mpz_t p, q, ip, r;
+    char * digits, * out;
+    size_t n, i;
+    int k, neg = fmpq_sgn(x) < 0, up, zero = 1;
+
+    mpz_inits(p, q, ip, r, NULL);
+    fmpz_get_mpz(p, fmpq_numref(x));
+    fmpz_get_mpz(q, fmpq_denref(x));
+    mpz_abs(p, p);
+    mpz_tdiv_qr(ip, r, p, q);
+    n = mpz_sizeinbase(ip, 10) + (size_t) K + 4;
+    digits = malloc(n + 2);
+    mpz_get_str(digits, 10, ip);
+    i = strlen(digits);
+    for (k = 0; k < K; k++)
+    {
+        mpz_mul_ui(r, r, 10);
+        mpz_tdiv_qr(ip, r, r, q);
+        digits[i++] = (char) ('0' + mpz_get_ui(ip));
+    }
+    digits[i] = '\0';
+    mpz_mul_ui(r, r, 2);
+    up = mpz_cmp(r, q) >= 0;
+    /* digits + 1 with carries, from the last.  */
+    for (k = (int) i - 1; up && k >= 0; k--)
+    {
+        if (digits[k] == '9')
+            digits[k] = '0';
+        else
+        {
+            digits[k]++;
+            up = 0;
+        }
+    }
+    out = malloc(n + 8);
+    i = 0;
+    for (k = 0; digits[k] != '\0'; k++)
+        zero &= digits[k] == '0';
+    if (neg && !(zero && !up))
+        out[i++] = '-';
+    if (up)
+        out[i++] = '1';
+    n = strlen(digits);
+    memcpy(out + i, digits, n - (size_t) K);
+    i += n - (size_t) K;
+    if (K > 0)
+    {
+        out[i++] = '.';
+        memcpy(out + i, digits + n - K, (size_t) K);
+        i += (size_t) K;
+    }
+    out[i] = '\0';
+    free(digits);
+    mpz_clears(p, q, ip, r, NULL);
+    return out;
+}
+
+static void
+check_one(const fmpq_t x, int K)
+{
+    char * got = NULL, * want = reference(x, K);
+    size_t len = 0;
+
+    CAPTURE(got, len, wc_fprint_fmpq_decimal(f_, x, K));
+    if (strcmp(got, want) != 0)
+    {
+        char * s = fmpq_get_str(NULL, 10, x);
+
+        wctest_fail("%s to %d digits: got %s, want %s", s, K, got, want);
+    }
+    free(got);
+    free(want);
+}
+
+static void
+hand(const char * q, int K, const char * want)
+{
+    fmpq_t x;
+    char * got = NULL;
+    size_t len = 0;
+
+    fmpq_init(x);
+    if (fmpq_set_str(x, q, 10) != 0)
+        wctest_fail("bad rational %s", q);
+    fmpq_canonicalise(x);
+    CAPTURE(got, len, wc_fprint_fmpq_decimal(f_, x, K));
+    if (strcmp(got, want) != 0)
+        wctest_fail("%s to %d digits: got %s, want %s", q, K, got, want);
+    check_one(x, K);
+    free(got);
+    fmpq_clear(x);
+}
+
+static void
+test_hand(void)
+{
+    hand("-1/3", 3, "-0.333");
+    hand("2/3", 3, "0.667");
+    hand("5/3", 0, "2");
+    hand("-5/3", 0, "-2");
+    hand("1/8", 2, "0.13");
+    hand("-1/8", 2, "-0.13");
+    hand("1/2", 0, "1");
+    hand("-1/2", 0, "-1");
+    hand("-1/3000", 2, "0.00");
+    hand("1/3000", 2, "0.00");
+    hand("0", 3, "0.000");
+    hand("7", 2, "7.00");
+    hand("-7", 0, "-7");
+    hand("999/1000", 2, "1.00");
+    hand("-9995/1000", 2, "-10.00");
+    hand("1/7", 50, "0.14285714285714285714285714285714285714285714285714");
+    hand("123456789123456789/10", 1, "12345678912345678.9");
+}
+
+static void
+test_random(void)
+{
+    slong i, iters = wctest_iters(4000);
+    fmpq_t x;
+    fmpz_t big;
+
+    fmpq_init(x);
+    fmpz_init(big);
+    for (i = 0; i < iters; i++)
+    {
+        int K;
+
+        if (!wctest_iter(i))
+            continue;
+        K = (int) wctest_randint(0, WC_DECIMALS_MAX);
+        if (wctest_chance(1, 4))
+        {
+            /* Large numerators and denominators, and exact halves.  */
+            fmpz_set_ui(big, wctest_rand());
+            fmpz_mul_ui(big, big, (ulong) wctest_randint(1, 1000000));
+            if (wctest_chance(1, 2))
+                fmpz_neg(big, big);
+            fmpz_set(fmpq_numref(x), big);
+            fmpz_set_ui(fmpq_denref(x), 1);
+            fmpz_mul_2exp(fmpq_denref(x), fmpq_denref(x),
+                          (ulong) wctest_randint(0, 40));
+            if (wctest_chance(1, 2))
+                fmpz_mul_ui(fmpq_denref(x), fmpq_denref(x),
+                            (ulong) wctest_randint(1, 100000));
+            fmpq_canonicalise(x);
+        }
+        else
+            wctest_rand_fmpq(x, 100000, 5000);
+        check_one(x, K);
+    }
+    fmpz_clear(big);
+    fmpq_clear(x);
+}
+
+static void
+expect_text(const char * what, const char * got, const char * want)
+{
+    if (strcmp(got, want) != 0)
+        wctest_fail("%s: got '%s', want '%s'", what, got, want);
+}
+
+static void
+test_text(void)
+{
+    fmpq v[3];
+    char * got = NULL;
+    size_t len = 0;
+    int j;
+
+    for (j = 0; j < 3; j++)
+        fmpq_init(v + j);
+    fmpq_set_si(v + 0, -1, 3);
+    fmpq_set_si(v + 1, 1, 1);
+    fmpq_set_si(v + 2, 5, 8);
+    if (wc_print_decimals() >= 0)
+        wctest_fail("decimals are on by default");
+    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, 0));
+    expect_text("off", got, "(-1/3, 1, 5/8)");
+    free(got);
+    wc_print_set_decimals(2);
+    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, 0));
+    expect_text("vector", got,
+                "(-1/3, 1, 5/8) (approx. (-0.33, 1.00, 0.63))");
+    free(got);
+    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, 1));
+    expect_text("JSON", got, "[\"-1/3\", \"1\", \"5/8\"]");
+    free(got);
+    CAPTURE(got, len, wc_fprint_qvec(f_, v + 1, 1, 0));
+    expect_text("integers", got, "(1)");
+    free(got);
+    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0));
+    expect_text("scalar", got, "-1/3 (approx. -0.33)");
+    free(got);
+    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 1));
+    expect_text("integer", got, "1");
+    free(got);
+    wc_print_set_decimals(WC_DECIMALS_MAX + 7);
+    if (wc_print_decimals() != WC_DECIMALS_MAX)
+        wctest_fail("decimals above the maximum: %d", wc_print_decimals());
+    wc_print_set_decimals(-1);
+    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0));
+    expect_text("off again", got, "-1/3");
+    free(got);
+    for (j = 0; j < 3; j++)
+        fmpq_clear(v + j);
+}
+
+int
+main(void)
+{
+    wctest_init("t-decimals");
+    test_hand();
+    test_random();
+    test_text();
+    flint_cleanup_master();
+    return 0;
+}
