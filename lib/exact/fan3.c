@@ -56,10 +56,45 @@ _wc_fan3_clear(_wc_fan3_t F)
     _wc_fan3_init(F);
 }
 
-/* sign det(a, b, c).  */
+/* Small entries (no GMP integer behind them): sign a . b in 128-bit
+   integers, exactly (each product is below 2^124, the sum below 2^126);
+   otherwise in fmpz.  */
+static int
+dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t)
+{
+#ifdef __SIZEOF_INT128__
+    if (!COEFF_IS_MPZ(a[0]) && !COEFF_IS_MPZ(a[1]) && !COEFF_IS_MPZ(a[2])
+        && !COEFF_IS_MPZ(b[0]) && !COEFF_IS_MPZ(b[1]) && !COEFF_IS_MPZ(b[2]))
+    {
+        __int128 s = (__int128) a[0] * b[0] + (__int128) a[1] * b[1]
+            + (__int128) a[2] * b[2];
+
+        return (s > 0) - (s < 0);
+    }
+#endif
+    return _wc_zvec3_dot_sgn(a, b, t);
+}
+
+#define SMALL40(x) (!COEFF_IS_MPZ(x) && (x) < (WORD(1) << 40) \
+                    && (x) > -(WORD(1) << 40))
+
+/* sign det(a, b, c): in 128-bit integers when every entry is below 2^40
+   in absolute value (minors below 2^81, products below 2^121).  */
 static int
 det_sgn(const fmpz * a, const fmpz * b, const fmpz * c, fmpz_t t, fmpz_t u)
 {
+#ifdef __SIZEOF_INT128__
+    if (SMALL40(a[0]) && SMALL40(a[1]) && SMALL40(a[2]) && SMALL40(b[0])
+        && SMALL40(b[1]) && SMALL40(b[2]) && SMALL40(c[0]) && SMALL40(c[1])
+        && SMALL40(c[2]))
+    {
+        __int128 s = a[0] * ((__int128) b[1] * c[2] - (__int128) b[2] * c[1])
+            + a[1] * ((__int128) b[2] * c[0] - (__int128) b[0] * c[2])
+            + a[2] * ((__int128) b[0] * c[1] - (__int128) b[1] * c[0]);
+
+        return (s > 0) - (s < 0);
+    }
+#endif
     fmpz_mul(u, b + 1, c + 2);
     fmpz_submul(u, b + 2, c + 1);
     fmpz_mul(t, a + 0, u);
@@ -78,7 +113,7 @@ ang_cmp(fan_ctx * c, slong a, slong b)
 {
     if (c->half[a] != c->half[b])
         return c->half[a] < c->half[b] ? -1 : 1;
-    return -_wc_zvec3_dot_sgn(c->qx + 3 * a, GV(c, b), c->t);
+    return -dot_sgn(c->qx + 3 * a, GV(c, b), c->t);
 }
 
 /* Stable bottom-up merge sort of x[0..n) by ang_cmp; tmp has n slots.  */
@@ -110,7 +145,7 @@ static int
 inner(fan_ctx * c, slong x, slong y, fmpz * w)
 {
     _wc_zvec3_cross(w, GV(c, x), GV(c, y));
-    return _wc_zvec3_dot_sgn(w, c->qx + 3 * y, c->t) > 0;
+    return dot_sgn(w, c->qx + 3 * y, c->t) > 0;
 }
 
 /* 1 when a makes a larger angle with q than b.  */
@@ -163,7 +198,7 @@ spans(const fmpz * G, slong k, fmpz * w, fmpz_t t)
             break;
     }
     for (i++; i < k; i++)
-        if (_wc_zvec3_dot_sgn(w, G + 3 * i, t) != 0)
+        if (dot_sgn(w, G + 3 * i, t) != 0)
             return 1;
     return 0;
 }
@@ -190,11 +225,11 @@ space_by_triple(fan_ctx * c, const fmpz * q, const slong * P, slong p,
     slong n = 0, i, j;
 
     for (i = 0; i < p; i++)
-        if (_wc_zvec3_dot_sgn(q, GV(c, P[i]), c->t) < 0)
+        if (dot_sgn(q, GV(c, P[i]), c->t) < 0)
             L[n++] = P[i];
     if (n < 3)
         return 0;
-    for (j = 1; j < n && _wc_zvec3_dot_sgn(c->qx + 3 * L[0], GV(c, L[j]),
+    for (j = 1; j < n && dot_sgn(c->qx + 3 * L[0], GV(c, L[j]),
                                            c->t) > 0; j++)
         ;
     if (j == 1 || j == n)
@@ -212,7 +247,7 @@ outermost(fan_ctx * c, slong * x, slong n, fmpz * w)
     for (i = 0; i < n; i++)
     {
         if (p > 0 && c->half[x[p - 1]] == c->half[x[i]]
-            && _wc_zvec3_dot_sgn(c->qx + 3 * x[p - 1], GV(c, x[i]),
+            && dot_sgn(c->qx + 3 * x[p - 1], GV(c, x[i]),
                                  c->t) == 0)
         {
             if (inner(c, x[p - 1], x[i], w))
@@ -279,7 +314,7 @@ certify(_wc_fan3_t F, fan_ctx * c, const slong * S, slong m, slong k,
         _fmpz_vec_add(w, w, h, 3);
     }
     for (i = 0; i < k && ok; i++)
-        ok = _wc_zvec3_dot_sgn(w, GV(c, i), c->t) > 0;
+        ok = dot_sgn(w, GV(c, i), c->t) > 0;
     if (!ok)
     {
         _fmpz_vec_clear(N, 3 * m);
@@ -318,17 +353,17 @@ fan_axis(_wc_fan3_t F, fan_ctx * c, const fmpz * q, slong k, slong * x,
 
         if (_fmpz_vec_is_zero(c->qx + 3 * i, 3))
         {
-            if (_wc_zvec3_dot_sgn(q, GV(c, i), c->t) < 0)
+            if (dot_sgn(q, GV(c, i), c->t) < 0)
             {
                 res = WC_FAN3_SPACE;    /* -q in the cone, q interior */
                 goto done;
             }
             continue;                   /* on the axis: not extreme */
         }
-        sg = _wc_zvec3_dot_sgn(n, GV(c, i), c->t);
+        sg = dot_sgn(n, GV(c, i), c->t);
         c->half[i] = !(sg > 0
                        || (sg == 0
-                           && _wc_zvec3_dot_sgn(r, GV(c, i), c->t) > 0));
+                           && dot_sgn(r, GV(c, i), c->t) > 0));
         x[p++] = i;
     }
     sort_idx(c, x, y, p);
@@ -390,7 +425,7 @@ _wc_fan3(_wc_fan3_t F, const fmpz * G, slong k)
         const fmpz * n = c.qx + 3 * i;
 
         for (i = 0; i < k && planar; i++)
-            planar = _wc_zvec3_dot_sgn(n, G + 3 * i, c.t) == 0;
+            planar = dot_sgn(n, G + 3 * i, c.t) == 0;
     }
     if (!planar)
         res = fan_axis(F, &c, q, k, x, x + k, x + 2 * k, w);
