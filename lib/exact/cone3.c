@@ -244,27 +244,44 @@ _wc_cone3_generators(wc_cone_t C, int * done, const fmpq_mat_t rays,
     return status;
 }
 
-/* 1 when the rows of E (k of them, primitive integers) span R^3.  */
+/* 1 when the rows of E span R^3; reads rows only until three
+   independent ones are found (each scaled to integers).  */
 static int
-spans3(const fmpz_mat_t E, slong k)
+spans3(const fmpq_mat_t E)
 {
-    fmpz * w = _fmpz_vec_init(3);
-    fmpz_t t;
-    slong i;
-    int r = 0;
+    fmpz * v = _fmpz_vec_init(9), * w = _fmpz_vec_init(3);
+    fmpz_t den, t;
+    slong i, j, r = 0;
 
+    fmpz_init(den);
     fmpz_init(t);
-    for (i = 1; i < k; i++)
+    for (i = 0; E != NULL && i < fmpq_mat_nrows(E) && r < 3; i++)
     {
-        _wc_zvec3_cross(w, WC_ROW(E, 0), WC_ROW(E, i));
-        if (!_fmpz_vec_is_zero(w, 3))
-            break;
+        fmpz * x = v + 3 * r;
+
+        fmpz_one(den);
+        for (j = 0; j < 3; j++)
+            fmpz_lcm(den, den, fmpq_denref(fmpq_mat_entry(E, i, j)));
+        for (j = 0; j < 3; j++)
+        {
+            fmpz_divexact(t, den, fmpq_denref(fmpq_mat_entry(E, i, j)));
+            fmpz_mul(x + j, fmpq_numref(fmpq_mat_entry(E, i, j)), t);
+        }
+        if (r == 0)
+            r = !_fmpz_vec_is_zero(x, 3);
+        else if (r == 1)
+        {
+            _wc_zvec3_cross(w, v, x);
+            r = _fmpz_vec_is_zero(w, 3) ? 1 : 2;
+        }
+        else
+            r = _wc_zvec3_dot_sgn(w, x, t) != 0 ? 3 : 2;
     }
-    for (i++; i < k && !r; i++)
-        r = _wc_zvec3_dot_sgn(w, WC_ROW(E, i), t) != 0;
+    _fmpz_vec_clear(v, 9);
     _fmpz_vec_clear(w, 3);
+    fmpz_clear(den);
     fmpz_clear(t);
-    return r;
+    return r == 3;
 }
 
 int
@@ -277,20 +294,20 @@ _wc_cone3_hrep(wc_cone_t C, int * done, const fmpq_mat_t eqs,
 
     *done = 0;
     fmpz_mat_init(G, 0, 3);
-    if (!_wc_hull3_generators(G, &k, eqs, NULL))
-        status = nomem(err);
-    else if (k > 0)
+    if (spans3(eqs))
     {
-        if (spans3(G, k))
-        {
-            _wc_cone3_set_origin(C);
-            *done = 1;
-        }
+        _wc_cone3_set_origin(C);
+        *done = 1;
     }
-    else if (!_wc_hull3_generators(G, &k, H, NULL))
+    else if (!_wc_hull3_generators(G, &k, eqs, NULL))
         status = nomem(err);
-    else
-        status = from_fan(C, done, G, k, 1, err);
+    else if (k == 0)    /* (equalities of rank 1 or 2: the general route) */
+    {
+        if (!_wc_hull3_generators(G, &k, H, NULL))
+            status = nomem(err);
+        else
+            status = from_fan(C, done, G, k, 1, err);
+    }
     fmpz_mat_clear(G);
     return status;
 }
