@@ -283,6 +283,111 @@ hull(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
     fmpz_clear(t);
 }
 
+/* h := e x a, turned so that h . q < 0 (a not parallel to q).  */
+static void
+side_normal(fmpz * h, const fmpz * e, const fmpz * a, const fmpz * q,
+            fmpz_t t)
+{
+    _wc_zvec3_cross(h, e, a);
+    if (_wc_zvec3_dot_sgn(h, q, t) > 0)
+        _fmpz_vec_neg(h, h, 3);
+}
+
+/* sign (a x b) . e; h is scratch.  */
+static int
+turn(fmpz * h, const fmpz * a, const fmpz * b, const fmpz * e, fmpz_t t)
+{
+    _wc_zvec3_cross(h, a, b);
+    return _wc_zvec3_dot_sgn(h, e, t);
+}
+
+/* Rank 2 in O(k): q, the sum of the generators, lies in the relative
+   interior; the generators farthest counterclockwise (L) and clockwise
+   (R) from q about the plane's normal e bound the cone: a wedge, a
+   half-plane or the whole plane, by the sign of (R x L) . e (or the
+   plane when some generator is a negative multiple of q).  Returns 0,
+   leaving E and F alone, when G does not have rank 2.  */
+static int
+planar(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
+{
+    fmpz * e = _fmpz_vec_init(3), * q = _fmpz_vec_init(3);
+    fmpz * w = _fmpz_vec_init(3), * h = _fmpz_vec_init(6);
+    slong i, j, L = -1, R = -1, nh = 0;
+    int whole = 0, s;
+    fmpz_t t;
+
+    fmpz_init(t);
+    for (i = 1; i < k && _fmpz_vec_is_zero(e, 3); i++)
+        _wc_zvec3_cross(e, WC_ROW(G, 0), WC_ROW(G, i));
+    for (i = 0; i < k; i++)
+    {
+        if (_wc_zvec3_dot_sgn(e, WC_ROW(G, i), t) != 0)
+            break;
+        _fmpz_vec_add(q, q, WC_ROW(G, i), 3);
+    }
+    if (_fmpz_vec_is_zero(e, 3) || i < k)
+    {
+        nh = -1;                        /* rank 1 or 3 */
+        goto cleanup;
+    }
+    _fmpz_vec_content(t, e, 3);
+    _fmpz_vec_scalar_divexact_fmpz(e, e, 3, t);
+    whole = _fmpz_vec_is_zero(q, 3);
+    _wc_zvec3_cross(w, e, q);           /* w . g = (q x g) . e */
+    for (i = 0; i < k && !whole; i++)
+    {
+        const fmpz * g = WC_ROW(G, i);
+
+        s = _wc_zvec3_dot_sgn(w, g, t);
+        if (s == 0)
+            whole = _wc_zvec3_dot_sgn(q, g, t) < 0;
+        else if (s > 0 && (L < 0 || turn(h, WC_ROW(G, L), g, e, t) > 0))
+            L = i;
+        else if (s < 0 && (R < 0 || turn(h, g, WC_ROW(G, R), e, t) > 0))
+            R = i;
+    }
+    if (!whole && (L < 0 || R < 0))
+    {
+        nh = -1;                        /* not reached: q is inside */
+        goto cleanup;
+    }
+    if (!whole)
+    {
+        s = turn(h, WC_ROW(G, R), WC_ROW(G, L), e, t);
+        whole = s < 0;
+        if (s >= 0)
+            side_normal(h + 3 * nh++, e, WC_ROW(G, L), q, t);
+        if (s > 0)
+            side_normal(h + 3 * nh++, e, WC_ROW(G, R), q, t);
+    }
+    fmpq_mat_clear(E);
+    fmpq_mat_init(E, 1, 3);
+    fmpq_mat_clear(F);
+    fmpq_mat_init(F, nh, 3);
+    for (j = 0; j < 3; j++)
+    {
+        fmpq_set_fmpz(fmpq_mat_entry(E, 0, j), e + j);
+        for (i = 0; i < nh; i++)
+            fmpq_set_fmpz(fmpq_mat_entry(F, i, j), h + 3 * i + j);
+    }
+
+cleanup:
+    _fmpz_vec_clear(e, 3);
+    _fmpz_vec_clear(q, 3);
+    _fmpz_vec_clear(w, 3);
+    _fmpz_vec_clear(h, 6);
+    fmpz_clear(t);
+    return nh >= 0;
+}
+
+/* The general kernel: rank 2 in O(k), the candidate search otherwise.  */
+static void
+general(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
+{
+    if (!planar(E, F, G, k))
+        hull(E, F, G, k);
+}
+
 static slong
 rows_of(const fmpq_mat_t A)
 {
@@ -353,7 +458,7 @@ _wc_hull3_v_to_h(fmpq_mat_t E, fmpq_mat_t H, const fmpq_mat_t rays,
         fmpq_mat_init(E, 0, 3);
     }
     else
-        hull(E, H, G, k);
+        general(E, H, G, k);
     fmpz_mat_clear(G);
     return status;
 }
@@ -431,7 +536,7 @@ _wc_hull3_h_to_v(fmpq_mat_t rays, fmpq_mat_t lines, const fmpq_mat_t E,
         if (!unique_rows(G, &k))
             status = nomem(err);
         else if (r != 0 || (r = by_fan(rays, G, k)) == WC_FAN3_OTHER)
-            hull(lines, rays, G, k);
+            general(lines, rays, G, k);
         else if (r == WC_FAN3_NOMEM)
             status = nomem(err);
     }
