@@ -1,5 +1,7 @@
 /* bench-cone.c -- time one mode cone by each route, n = 1 .. 8 fixels
-   (the paper's Table 4), and the direct route alone up to n = 50.
+   (the paper's Table 4), the direct route alone up to n = 1000 with its
+   growth exponent, and the 3-D conversion alone on k random generators
+   (the O(k log k) fan against the former O(k^2) kernel, tests/ref-hull3.c).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -16,6 +18,7 @@
 
 #include <config.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,6 +26,8 @@
 
 #include "wrenchcone.h"
 #include "benchutil.h"
+#include "exact/hull3.h"
+#include "ref-hull3.h"
 
 /* Rational points on the unit circle from Pythagorean parametrisation,
    t = k / (k + 3): ((1 - t^2) / (1 + t^2), 2t / (1 + t^2)); the inward
@@ -105,17 +110,123 @@ time_cone(const wc_problem_t P, const char * mode, wc_method method,
     return t / reps;
 }
 
+/* k random generators, pointed: (x, y, R) with (x, y) uniform in the disc
+   of radius R = 2^20 (a random layout with many extreme rays).  */
+static void
+random_generators(fmpq_mat_t G, slong k, flint_rand_t st)
+{
+    slong i, R = WORD(1) << 20;
+
+    fmpq_mat_clear(G);
+    fmpq_mat_init(G, k, 3);
+    for (i = 0; i < k; i++)
+    {
+        slong x, y;
+
+        do
+        {
+            x = (slong) n_randint(st, 2 * R + 1) - R;
+            y = (slong) n_randint(st, 2 * R + 1) - R;
+        }
+        while ((double) x * x + (double) y * y > (double) R * R);
+        fmpq_set_si(fmpq_mat_entry(G, i, 0), x, 1);
+        fmpq_set_si(fmpq_mat_entry(G, i, 1), y, 1);
+        fmpq_set_si(fmpq_mat_entry(G, i, 2), R, 1);
+    }
+}
+
+/* Mean seconds of one V -> H conversion (old: the reference kernel).  */
+static double
+time_conversion(const fmpq_mat_t G, int old, double budget, slong * facets)
+{
+    fmpq_mat_t E, H;
+    wc_error_t err;
+    double t0 = wcbench_now(), t;
+    long reps = 0;
+
+    fmpq_mat_init(E, 0, 3);
+    fmpq_mat_init(H, 0, 3);
+    wc_error_init(err);
+    do
+    {
+        if (old)
+            ref_hull3_v_to_h(E, H, G, NULL);
+        else if (_wc_hull3_v_to_h(E, H, G, NULL, err) != WC_OK)
+        {
+            fprintf(stderr, "bench-cone: %s\n", err->message);
+            exit(3);
+        }
+        reps++;
+        t = wcbench_now() - t0;
+    }
+    while (t < budget);
+    *facets = fmpq_mat_nrows(H);
+    fmpq_mat_clear(E);
+    fmpq_mat_clear(H);
+    wc_error_clear(err);
+    return t / reps;
+}
+
+static void
+conversions(double budget)
+{
+    static const slong ks[] = { 1000, 10000, 100000 };
+    flint_rand_t st;
+    fmpq_mat_t G;
+    double last_old = 0;
+    slong i, kprev = 0;
+
+    flint_randinit(st);
+    fmpq_mat_init(G, 0, 3);
+    printf("3-D conversion V -> H of k random pointed generators (facets "
+           "found), mean ms:\n");
+    printf("%7s  %7s  %12s  %12s  %9s\n", "k", "facets", "fan ms",
+           "old ms", "old/fan");
+    for (i = 0; i < (slong) (sizeof ks / sizeof ks[0]); i++)
+    {
+        slong k = ks[i], mf, mo;
+        double tf, to = -1;
+
+        random_generators(G, k, st);
+        tf = time_conversion(G, 0, budget, &mf);
+        /* The old kernel is about quadratic: only where it stays under
+           about 2 s.  */
+        if (i == 0 || last_old * ((double) k / kprev) * ((double) k / kprev)
+            < 2.0)
+        {
+            to = time_conversion(G, 1, budget, &mo);
+            if (mo < mf)
+            {
+                fprintf(stderr, "bench-cone: the kernels disagree\n");
+                exit(3);
+            }
+            last_old = to;
+            kprev = k;
+        }
+        if (to >= 0)
+            printf("%7ld  %7ld  %12.3f  %12.3f  %9.1f\n", (long) k, (long) mf,
+                   1e3 * tf, 1e3 * to, to / tf);
+        else
+            printf("%7ld  %7ld  %12.3f  %12s  %9s\n", (long) k, (long) mf,
+                   1e3 * tf, "-", "-");
+    }
+    fmpq_mat_clear(G);
+    flint_randclear(st);
+}
+
 int
 main(int argc, char ** argv)
 {
     slong maxn = argc > 1 ? atol(argv[1]) : 8, n, m;
     double budget = argc > 2 ? atof(argv[2]) : 0.2, ratio6 = 0;
-    static const slong big[] = { 12, 25, 50 };
-    char mode[64];
+    static const slong big[] = { 12, 25, 50, 100, 200, 500, 1000 };
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    slong np = 0;
+    char * mode = malloc(1001);
 
     wc_init();
     printf("One wrench cone, mean time per cone (ms); exact GMP arithmetic.\n");
-    printf("%3s  %-6s  %12s  %12s  %9s  %s\n", "n", "mode", "direct ms",
+    printf("%4s  %-6s  %12s  %12s  %9s  %s\n", "n", "mode", "direct ms",
            "paper ms", "paper/dir", "cone");
     for (n = 1; n <= maxn; n++)
     {
@@ -138,7 +249,7 @@ main(int argc, char ** argv)
                 fprintf(stderr, "bench-cone: routes disagree on emptiness\n");
                 return 3;
             }
-            printf("%3ld  %-6.6s  %12.4f  %12.4f  %9.1f  %s\n", (long) n,
+            printf("%4ld  %-6.6s  %12.4f  %12.4f  %9.1f  %s\n", (long) n,
                    n <= 6 ? mode : (m == 0 ? "l..l" : "n..n"), 1e3 * td,
                    1e3 * tp, tp / td, ed ? "empty" : "nonempty");
             sd += td;
@@ -160,10 +271,23 @@ main(int argc, char ** argv)
         wc_problem_init(P);
         make_problem(P, n);
         td = time_cone(P, mode, WC_METHOD_DIRECT, budget, &ed);
-        printf("%3ld  %-6s  %12.4f  %12s  %9s  %s\n", (long) n, "n..n",
+        printf("%4ld  %-6s  %12.4f  %12s  %9s  %s\n", (long) n, "n..n",
                1e3 * td, "-", "-", ed ? "empty" : "nonempty");
+        if (n >= 50)
+        {
+            double x = log((double) n), y = log(td);
+
+            sx += x;
+            sy += y;
+            sxx += x * x;
+            sxy += x * y;
+            np++;
+        }
         wc_problem_clear(P);
     }
+    printf("growth exponent of the direct route, n..n, n = 50..1000 "
+           "(least-squares slope of log time vs log n): %.2f\n",
+           (np * sxy - sx * sy) / (np * sxx - sx * sx));
     {
         /* Degenerate: 200 collinear fixels with parallel normals, so that
            many generators of -J D_x are coplanar.  */
@@ -187,14 +311,16 @@ main(int argc, char ** argv)
         memset(big, 'n', n);
         big[n] = '\0';
         td = time_cone(P, big, WC_METHOD_DIRECT, budget, &ed);
-        printf("%3ld  %-6s  %12.4f  %12s  %9s  %s, collinear fixels\n",
+        printf("%4ld  %-6s  %12.4f  %12s  %9s  %s, collinear fixels\n",
                (long) n, "n..n", 1e3 * td, "-", "-",
                ed ? "empty" : "nonempty");
         free(big);
         wc_problem_clear(P);
     }
+    conversions(budget);
     if (maxn >= 6)
         printf("direct vs paper at n=6: %.1f x\n", ratio6);
+    free(mode);
     flint_cleanup_master();
     return 0;
 }

@@ -3,6 +3,7 @@
 EXTRA_PROGRAMS += bench/bench-cone bench/bench-modes bench/bench-double \
 	bench/bench-stability bench/bench-plan bench/bench-cert
 bench_bench_cone_SOURCES = bench/bench-cone.c bench/benchutil.c
+bench_bench_cone_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)/tests
 bench_bench_cone_LDADD = $(TEST_LIBS)
 bench_bench_modes_SOURCES = bench/bench-modes.c bench/benchutil.c
 bench_bench_modes_CPPFLAGS = $(AM_CPPFLAGS) -I$(top_srcdir)/tests

@@ -11,7 +11,8 @@ tests_libwctest_la_SOURCES = \
 	tests/ref-modes.c tests/ref-modes.h \
 	tests/ref-stab.c tests/ref-stab.h \
 	tests/ref-plan.c tests/ref-plan.h \
-	tests/ref-faces.c tests/ref-faces.h
+	tests/ref-faces.c tests/ref-faces.h \
+	tests/ref-hull3.c tests/ref-hull3.h
 
 TEST_LIBS = tests/libwctest.la lib/libwc.la
 C_TESTS = \
@@ -19,6 +20,7 @@ C_TESTS = \
 	tests/t-parse \
 	tests/t-model \
 	tests/t-cone \
+	tests/t-hull3 \
 	tests/t-routes \
 	tests/t-modes \
 	tests/t-modeswalk \

@@ -17,32 +17,27 @@
 #include "exact/lp.h"
 #include "analysis/wrench.h"
 
-/* Append column col of J, times sign, to A as a new last row.  */
+/* Set row (*r)++ of A (allocated with room) to column col of J, times
+   sign.  */
 static void
-append_row(fmpq_mat_t A, const fmpq_mat_t J, slong col, int sign)
+append_row(fmpq_mat_t A, slong * r, const fmpq_mat_t J, slong col, int sign)
 {
-    slong r = fmpq_mat_nrows(A), j, i;
-    fmpq_mat_t B;
+    slong j;
 
-    fmpq_mat_init(B, r + 1, 3);
-    for (i = 0; i < r; i++)
-        for (j = 0; j < 3; j++)
-            fmpq_set(fmpq_mat_entry(B, i, j), fmpq_mat_entry(A, i, j));
     for (j = 0; j < 3; j++)
     {
-        fmpq_set(fmpq_mat_entry(B, r, j), fmpq_mat_entry(J, j, col));
+        fmpq_set(fmpq_mat_entry(A, *r, j), fmpq_mat_entry(J, j, col));
         if (sign < 0)
-            fmpq_neg(fmpq_mat_entry(B, r, j), fmpq_mat_entry(B, r, j));
+            fmpq_neg(fmpq_mat_entry(A, *r, j), fmpq_mat_entry(A, *r, j));
     }
-    fmpq_mat_swap(A, B);
-    fmpq_mat_clear(B);
+    (*r)++;
 }
 
 int
 wc_wrench_cone_direct(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
                       const char * mode, wc_error_t err)
 {
-    slong n = P->n, i, j, q = 0;
+    slong n = P->n, i, j, q = 0, re = 0, rl = 0, rt = 0;
     fmpq_mat_t J, M, Eq, Le, Lt, Q, Vr;
     fmpq e[4];
     wc_cone_t V;
@@ -55,9 +50,9 @@ wc_wrench_cone_direct(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
     }
     fmpq_mat_init(J, 3, 2 * n);
     fmpq_mat_init(M, 3, 3);
-    fmpq_mat_init(Eq, 0, 3);
-    fmpq_mat_init(Le, 0, 3);
-    fmpq_mat_init(Lt, 0, 3);
+    fmpq_mat_init(Eq, 2 * n, 3);       /* trimmed below */
+    fmpq_mat_init(Le, n, 3);
+    fmpq_mat_init(Lt, n, 3);
     fmpq_mat_init(Q, 2 * n, 3);
     for (j = 0; j < 4; j++)
         fmpq_init(e + j);
@@ -73,16 +68,16 @@ wc_wrench_cone_direct(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
 
         switch (mode[i])
         {
-        case 's': append_row(Le, J, cn, -1); break;             /* a_n >= 0 */
-        case 'a': append_row(Lt, J, cn, 1); break;              /* a_n < 0 */
+        case 's': append_row(Le, &rl, J, cn, -1); break;        /* a_n >= 0 */
+        case 'a': append_row(Lt, &rt, J, cn, 1); break;         /* a_n < 0 */
         case 'u': break;
-        case 'l': append_row(Eq, J, cn, 1);
-                  append_row(Lt, J, ct, -1); break;             /* a_t > 0 */
-        case 'r': append_row(Eq, J, cn, 1);
-                  append_row(Lt, J, ct, 1); break;              /* a_t < 0 */
-        case 'n': append_row(Eq, J, cn, 1);
-                  append_row(Eq, J, ct, 1); break;
-        case 'm': append_row(Eq, J, cn, 1); break;
+        case 'l': append_row(Eq, &re, J, cn, 1);
+                  append_row(Lt, &rt, J, ct, -1); break;        /* a_t > 0 */
+        case 'r': append_row(Eq, &re, J, cn, 1);
+                  append_row(Lt, &rt, J, ct, 1); break;         /* a_t < 0 */
+        case 'n': append_row(Eq, &re, J, cn, 1);
+                  append_row(Eq, &re, J, ct, 1); break;
+        case 'm': append_row(Eq, &re, J, cn, 1); break;
         default: break;
         }
         /* D_x: friction-cone edges (c_n, c_t), mapped by -J.  */
@@ -98,6 +93,9 @@ wc_wrench_cone_direct(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
             }
     }
     _wc_fmpq_mat_keep_rows(Q, q);
+    _wc_fmpq_mat_keep_rows(Eq, re);
+    _wc_fmpq_mat_keep_rows(Le, rl);
+    _wc_fmpq_mat_keep_rows(Lt, rt);
 
     status = wc_cone_set_hrep(V, Eq, Le, Lt, err);
     if (status != WC_OK)

@@ -26,6 +26,7 @@
 #include "exact/cone.h"
 #include "exact/cddbridge.h"
 #include "exact/hull3.h"
+#include "exact/cone3.h"
 
 /* ---------------------------------------------------------------------
    Small helpers on rows.  */
@@ -633,7 +634,7 @@ _wc_cone_set_hrep_kernel(wc_cone_t C, const fmpq_mat_t eqs,
     fmpq_mat_t H, rays, lines;
     fmpz_mat_t Sz;
     fmpz * p = _fmpz_vec_init(d);
-    int status;
+    int status, done = 0;
 
     vstack(H, ineqs, strict, d);
     fmpq_mat_init(rays, 0, d);
@@ -641,14 +642,21 @@ _wc_cone_set_hrep_kernel(wc_cone_t C, const fmpq_mat_t eqs,
     fmpz_mat_init(Sz, ns, d);
 
     wc_cone_set_empty(C);
-    status = (d == 3 && !use_cdd)
-        ? _wc_hull3_h_to_v(rays, lines, eqs, H, err)
-        : _wc_cdd_h_to_v(rays, lines, d, eqs, H, err);
-    if (status != WC_OK)
+    /* d = 3: the fan (pointed cones, the origin) first.  */
+    if (d == 3 && !use_cdd
+        && (status = _wc_cone3_hrep(C, &done, eqs, H, err)) != WC_OK)
         goto cleanup;
-    status = set_closure(C, rays, lines, eqs, H, err);
-    if (status != WC_OK)
-        goto cleanup;
+    if (!done)
+    {
+        status = (d == 3 && !use_cdd)
+            ? _wc_hull3_h_to_v(rays, lines, eqs, H, err)
+            : _wc_cdd_h_to_v(rays, lines, d, eqs, H, err);
+        if (status != WC_OK)
+            goto cleanup;
+        status = set_closure(C, rays, lines, eqs, H, err);
+        if (status != WC_OK)
+            goto cleanup;
+    }
 
     /* The strict rows hold strictly on the relative interior of exactly
        the faces they do not vanish on; the cone is empty when they fail
@@ -690,11 +698,18 @@ _wc_cone_set_generators_kernel(wc_cone_t C, const fmpq_mat_t rays,
 {
     slong d = C->d;
     fmpq_mat_t E, H;
-    int status;
+    int status, done = 0;
 
+    wc_cone_set_empty(C);
+    /* d = 3: the fan (pointed cones, R^3) first.  */
+    if (d == 3 && !use_cdd)
+    {
+        status = _wc_cone3_generators(C, &done, rays, lines, err);
+        if (status != WC_OK || done)
+            return status;
+    }
     fmpq_mat_init(E, 0, d);
     fmpq_mat_init(H, 0, d);
-    wc_cone_set_empty(C);
     status = (d == 3 && !use_cdd)
         ? _wc_hull3_v_to_h(E, H, rays, lines, err)
         : _wc_cdd_v_to_h(E, H, d, rays, lines, err);

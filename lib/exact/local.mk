@@ -9,6 +9,8 @@ lib_libwc_la_SOURCES += \
 	lib/exact/cddbridge.c \
 	lib/exact/lp.c \
 	lib/exact/hull3.c \
+	lib/exact/fan3.c \
+	lib/exact/cone3.c \
 	lib/exact/arrangement.c \
 	lib/exact/cells.c \
 	lib/exact/cellrays.c \
@@ -28,6 +30,8 @@ noinst_HEADERS += \
 	lib/exact/cddbridge.h \
 	lib/exact/lp.h \
 	lib/exact/hull3.h \
+	lib/exact/fan3.h \
+	lib/exact/cone3.h \
 	lib/exact/arrangement.h \
 	lib/exact/incidence.h \
 	lib/exact/box.h \

@@ -1,0 +1,313 @@
+/* cone3.c -- canonical cones in R^3 straight from the fan.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   The canonical form is cone.h's, field for field: primitive rays and
+   facet normals sorted lexicographically, faces sorted by dimension and
+   then by their ray index lists.  A pointed 3-dimensional cone has no
+   lines or equalities, so nothing is projected; its 2-faces are the
+   pairs of cyclically consecutive extreme rays.  */
+
+#include <config.h>
+
+#include <stdlib.h>
+
+#include <flint/fmpz_vec.h>
+
+#include "core/error.h"
+#include "exact/vec3.h"
+#include "exact/hull3.h"
+#include "exact/cone3.h"
+
+typedef struct
+{
+    const fmpz * row;
+    slong idx;
+}
+ref3;
+
+static int
+ref3_cmp(const void * a, const void * b)
+{
+    const ref3 * x = a, * y = b;
+    slong j;
+    int c;
+
+    for (j = 0; j < 3; j++)
+        if ((c = fmpz_cmp(x->row + j, y->row + j)) != 0)
+            return c;
+    return 0;
+}
+
+typedef struct
+{
+    slong a, b;
+}
+pair3;
+
+static int
+pair3_cmp(const void * x, const void * y)
+{
+    const pair3 * p = x, * q = y;
+
+    if (p->a != q->a)
+        return p->a < q->a ? -1 : 1;
+    if (p->b != q->b)
+        return p->b < q->b ? -1 : 1;
+    return 0;
+}
+
+/* A := the m rows V (3m entries) sorted; pos[i] := the sorted index of
+   row i (when pos is not NULL).  */
+static int
+sorted_rows(fmpz_mat_t A, const fmpz * V, slong m, slong * pos)
+{
+    ref3 * r = malloc(sizeof(ref3) * (m + 1));
+    slong i;
+
+    if (r == NULL)
+        return 0;
+    for (i = 0; i < m; i++)
+    {
+        r[i].row = V + 3 * i;
+        r[i].idx = i;
+    }
+    qsort(r, m, sizeof(ref3), ref3_cmp);
+    fmpz_mat_clear(A);
+    fmpz_mat_init(A, m, 3);
+    for (i = 0; i < m; i++)
+    {
+        _fmpz_vec_set(WC_ROW(A, i), r[i].row, 3);
+        if (pos != NULL)
+            pos[r[i].idx] = i;
+    }
+    free(r);
+    return 1;
+}
+
+static int
+set_face(wc_face_struct * F, slong dim, slong n, slong a, slong b)
+{
+    slong i;
+
+    F->dim = dim;
+    F->nrays = n;
+    F->included = 1;
+    F->rays = flint_malloc(sizeof(slong) * (n + 1));
+    if (F->rays == NULL)
+        return 0;
+    if (n == 1)
+        F->rays[0] = a;
+    else if (n == 2)
+    {
+        F->rays[0] = a;
+        F->rays[1] = b;
+    }
+    else
+        for (i = 0; i < n; i++)
+            F->rays[i] = i;
+    return 1;
+}
+
+int
+_wc_cone3_set_fan(wc_cone_t C, const _wc_fan3_t F, int polar)
+{
+    slong m = F->m, i, f = 0;
+    slong * pos = malloc(sizeof(slong) * (m + 1));
+    pair3 * P = malloc(sizeof(pair3) * (m + 1));
+    int ok = pos != NULL && P != NULL;
+
+    wc_cone_set_empty(C);
+    /* Cone: rays R_i, facet i holds R_i and R_{i+1}.  Polar: rays F's
+       facets, and facet F.rays_{i+1} holds F.facets_i and F.facets_{i+1}:
+       the same cyclic pairs.  */
+    ok = ok && sorted_rows(C->rays, polar ? F->facets : F->rays, m, pos)
+        && sorted_rows(C->ineqs, polar ? F->rays : F->facets, m, NULL);
+    C->faces = ok ? flint_calloc(2 * m + 2, sizeof(wc_face_struct)) : NULL;
+    if (C->faces == NULL)
+        goto fail;
+    for (i = 0; i < m; i++)
+    {
+        slong a = pos[i], b = pos[(i + 1) % m];
+
+        P[i].a = FLINT_MIN(a, b);
+        P[i].b = FLINT_MAX(a, b);
+    }
+    qsort(P, m, sizeof(pair3), pair3_cmp);
+    C->nfaces = 2 * m + 2;
+    ok = set_face(C->faces + f++, 0, 0, 0, 0);
+    for (i = 0; i < m && ok; i++)
+        ok = set_face(C->faces + f++, 1, 1, i, 0);
+    for (i = 0; i < m && ok; i++)
+        ok = set_face(C->faces + f++, 2, 2, P[i].a, P[i].b);
+    ok = ok && set_face(C->faces + f++, 3, m, 0, 0);
+    if (!ok)
+        goto fail;
+    C->empty = 0;
+    C->dim = 3;
+    C->lineality_dim = 0;
+    free(pos);
+    free(P);
+    return WC_OK;
+
+fail:
+    C->nfaces = f;      /* the faces set so far, for wc_cone_set_empty */
+    wc_cone_set_empty(C);
+    free(pos);
+    free(P);
+    return WC_EINTERNAL;
+}
+
+/* One face of dimension dim and no rays.  */
+static void
+one_face(wc_cone_t C, slong dim)
+{
+    C->faces = flint_malloc(sizeof(wc_face_struct));
+    C->nfaces = 1;
+    set_face(C->faces, dim, 0, 0, 0);
+    C->empty = 0;
+}
+
+void
+_wc_cone3_set_space(wc_cone_t C)
+{
+    wc_cone_set_empty(C);
+    fmpz_mat_clear(C->lines);
+    fmpz_mat_init(C->lines, 3, 3);
+    fmpz_mat_one(C->lines);
+    C->dim = 3;
+    C->lineality_dim = 3;
+    one_face(C, 3);
+}
+
+void
+_wc_cone3_set_origin(wc_cone_t C)
+{
+    wc_cone_set_empty(C);
+    fmpz_mat_clear(C->eqs);
+    fmpz_mat_init(C->eqs, 3, 3);
+    fmpz_mat_one(C->eqs);
+    C->dim = 0;
+    C->lineality_dim = 0;
+    one_face(C, 0);
+}
+
+static int
+nomem(wc_error_t err)
+{
+    return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                        "internal error: out of memory in the 3-D kernel");
+}
+
+/* The fan of the first k rows of G into C.  */
+static int
+from_fan(wc_cone_t C, int * done, const fmpz_mat_t G, slong k, int polar,
+         wc_error_t err)
+{
+    _wc_fan3_t F;
+    int r, status = WC_OK;
+
+    _wc_fan3_init(F);
+    r = k == 0 ? WC_FAN3_OTHER : _wc_fan3(F, WC_ROW(G, 0), k);
+    *done = r != WC_FAN3_OTHER;
+    if (r == WC_FAN3_NOMEM)
+        status = nomem(err);
+    else if (r == WC_FAN3_POINTED)
+        status = _wc_cone3_set_fan(C, F, polar);
+    else if (r == WC_FAN3_SPACE && polar)
+        _wc_cone3_set_origin(C);
+    else if (r == WC_FAN3_SPACE)
+        _wc_cone3_set_space(C);
+    if (status != WC_OK)
+        wc_cone_set_empty(C);
+    _wc_fan3_clear(F);
+    return status;
+}
+
+int
+_wc_cone3_generators(wc_cone_t C, int * done, const fmpq_mat_t rays,
+                     const fmpq_mat_t lines, wc_error_t err)
+{
+    fmpz_mat_t G;
+    slong k;
+    int status;
+
+    *done = 0;
+    fmpz_mat_init(G, 0, 3);
+    if (!_wc_hull3_generators(G, &k, rays, lines))
+        status = nomem(err);
+    else
+        status = from_fan(C, done, G, k, 0, err);
+    fmpz_mat_clear(G);
+    return status;
+}
+
+/* 1 when the rows of E span R^3; reads rows only until three
+   independent ones are found (each scaled to integers).  */
+static int
+spans3(const fmpq_mat_t E)
+{
+    fmpz * v = _fmpz_vec_init(9), * w = _fmpz_vec_init(3);
+    fmpz_t den, t;
+    slong i, j, r = 0;
+
+    fmpz_init(den);
+    fmpz_init(t);
+    for (i = 0; E != NULL && i < fmpq_mat_nrows(E) && r < 3; i++)
+    {
+        fmpz * x = v + 3 * r;
+
+        fmpz_one(den);
+        for (j = 0; j < 3; j++)
+            fmpz_lcm(den, den, fmpq_denref(fmpq_mat_entry(E, i, j)));
+        for (j = 0; j < 3; j++)
+        {
+            fmpz_divexact(t, den, fmpq_denref(fmpq_mat_entry(E, i, j)));
+            fmpz_mul(x + j, fmpq_numref(fmpq_mat_entry(E, i, j)), t);
+        }
+        if (r == 0)
+            r = !_fmpz_vec_is_zero(x, 3);
+        else if (r == 1)
+        {
+            _wc_zvec3_cross(w, v, x);
+            r = _fmpz_vec_is_zero(w, 3) ? 1 : 2;
+        }
+        else
+            r = _wc_zvec3_dot_sgn(w, x, t) != 0 ? 3 : 2;
+    }
+    _fmpz_vec_clear(v, 9);
+    _fmpz_vec_clear(w, 3);
+    fmpz_clear(den);
+    fmpz_clear(t);
+    return r == 3;
+}
+
+int
+_wc_cone3_hrep(wc_cone_t C, int * done, const fmpq_mat_t eqs,
+               const fmpq_mat_t H, wc_error_t err)
+{
+    fmpz_mat_t G;
+    slong k;
+    int status = WC_OK;
+
+    *done = 0;
+    fmpz_mat_init(G, 0, 3);
+    if (spans3(eqs))
+    {
+        _wc_cone3_set_origin(C);
+        *done = 1;
+    }
+    else if (!_wc_hull3_generators(G, &k, eqs, NULL))
+        status = nomem(err);
+    else if (k == 0)    /* (equalities of rank 1 or 2: the general route) */
+    {
+        if (!_wc_hull3_generators(G, &k, H, NULL))
+            status = nomem(err);
+        else
+            status = from_fan(C, done, G, k, 1, err);
+    }
+    fmpz_mat_clear(G);
+    return status;
+}

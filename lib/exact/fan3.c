@@ -1,0 +1,442 @@
+/* fan3.c -- the O(k log k) exact conversion of a cone in R^3.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   q, the sum of the generators, lies in the interior of pos(G) when G
+   spans R^3.  Sorted by angle around the axis q (a half-plane split, then
+   the sign of det(q, a, b)), keeping on each half-plane through q only
+   the generator farthest from q, the generators form a star-shaped
+   polygon in the central projection; its convex hull, by Graham's scan
+   from the generator farthest from q (a hull vertex when the cone is
+   pointed), gives the extreme rays in order, with orientation predicate
+   sign det(a, b, c).  The answer is certified, not assumed: c, the sum of
+   the inward facet normals, must satisfy c . g > 0 for every generator,
+   which proves the cone pointed (the scan is exact on pointed cones).
+   When it fails, -q in the cone of three generators proves R^3; anything
+   else is left to the general kernel.  */
+
+#include <config.h>
+
+#include <stdlib.h>
+#include <string.h>
+
+#include <flint/fmpz_vec.h>
+
+#include "exact/vec3.h"
+#include "exact/fan3.h"
+
+typedef struct
+{
+    const fmpz * G;
+    fmpz * qx;                  /* 3k: q x g_i */
+    unsigned char * half;       /* 0: angle in [0, pi), 1: [pi, 2 pi) */
+    fmpz_t t, u;
+}
+fan_ctx;
+
+#define GV(c, i) ((c)->G + 3 * (i))
+
+void
+_wc_fan3_init(_wc_fan3_t F)
+{
+    F->m = 0;
+    F->rays = NULL;
+    F->facets = NULL;
+}
+
+void
+_wc_fan3_clear(_wc_fan3_t F)
+{
+    if (F->rays != NULL)
+        _fmpz_vec_clear(F->rays, 3 * F->m);
+    if (F->facets != NULL)
+        _fmpz_vec_clear(F->facets, 3 * F->m);
+    _wc_fan3_init(F);
+}
+
+/* Small entries (no GMP integer behind them): sign a . b in 128-bit
+   integers, exactly (each product is below 2^124, the sum below 2^126);
+   otherwise in fmpz.  */
+static int
+dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t)
+{
+#ifdef __SIZEOF_INT128__
+    if (!COEFF_IS_MPZ(a[0]) && !COEFF_IS_MPZ(a[1]) && !COEFF_IS_MPZ(a[2])
+        && !COEFF_IS_MPZ(b[0]) && !COEFF_IS_MPZ(b[1]) && !COEFF_IS_MPZ(b[2]))
+    {
+        __int128 s = (__int128) a[0] * b[0] + (__int128) a[1] * b[1]
+            + (__int128) a[2] * b[2];
+
+        return (s > 0) - (s < 0);
+    }
+#endif
+    return _wc_zvec3_dot_sgn(a, b, t);
+}
+
+#define SMALL40(x) (!COEFF_IS_MPZ(x) && (x) < (WORD(1) << 40) \
+                    && (x) > -(WORD(1) << 40))
+
+/* sign det(a, b, c): in 128-bit integers when every entry is below 2^40
+   in absolute value (minors below 2^81, products below 2^121).  */
+static int
+det_sgn(const fmpz * a, const fmpz * b, const fmpz * c, fmpz_t t, fmpz_t u)
+{
+#ifdef __SIZEOF_INT128__
+    if (SMALL40(a[0]) && SMALL40(a[1]) && SMALL40(a[2]) && SMALL40(b[0])
+        && SMALL40(b[1]) && SMALL40(b[2]) && SMALL40(c[0]) && SMALL40(c[1])
+        && SMALL40(c[2]))
+    {
+        __int128 s = a[0] * ((__int128) b[1] * c[2] - (__int128) b[2] * c[1])
+            + a[1] * ((__int128) b[2] * c[0] - (__int128) b[0] * c[2])
+            + a[2] * ((__int128) b[0] * c[1] - (__int128) b[1] * c[0]);
+
+        return (s > 0) - (s < 0);
+    }
+#endif
+    fmpz_mul(u, b + 1, c + 2);
+    fmpz_submul(u, b + 2, c + 1);
+    fmpz_mul(t, a + 0, u);
+    fmpz_mul(u, b + 2, c + 0);
+    fmpz_submul(u, b + 0, c + 2);
+    fmpz_addmul(t, a + 1, u);
+    fmpz_mul(u, b + 0, c + 1);
+    fmpz_submul(u, b + 1, c + 0);
+    fmpz_addmul(t, a + 2, u);
+    return fmpz_sgn(t);
+}
+
+/* Counterclockwise order around q.  */
+static int
+ang_cmp(fan_ctx * c, slong a, slong b)
+{
+    if (c->half[a] != c->half[b])
+        return c->half[a] < c->half[b] ? -1 : 1;
+    return -dot_sgn(c->qx + 3 * a, GV(c, b), c->t);
+}
+
+/* Stable bottom-up merge sort of x[0..n) by ang_cmp; tmp has n slots.  */
+static void
+sort_idx(fan_ctx * c, slong * x, slong * tmp, slong n)
+{
+    slong w, i;
+
+    for (w = 1; w < n; w *= 2)
+    {
+        for (i = 0; i < n; i += 2 * w)
+        {
+            slong mid = FLINT_MIN(i + w, n), hi = FLINT_MIN(i + 2 * w, n);
+            slong a = i, b = mid, o = i;
+
+            while (a < mid && b < hi)
+                tmp[o++] = ang_cmp(c, x[b], x[a]) < 0 ? x[b++] : x[a++];
+            while (a < mid)
+                tmp[o++] = x[a++];
+            while (b < hi)
+                tmp[o++] = x[b++];
+        }
+        memcpy(x, tmp, sizeof(slong) * n);
+    }
+}
+
+/* 1 when x lies in pos(q, y), x and y on one half-plane through q.  */
+static int
+inner(fan_ctx * c, slong x, slong y, fmpz * w)
+{
+    _wc_zvec3_cross(w, GV(c, x), GV(c, y));
+    return dot_sgn(w, c->qx + 3 * y, c->t) > 0;
+}
+
+/* 1 when a makes a larger angle with q than b.  */
+static int
+farther(fan_ctx * c, const fmpz * q, slong a, slong b)
+{
+    fmpz_t qa, qb, na, nb;
+    int sa, sb, r;
+
+    fmpz_init(qa);
+    fmpz_init(qb);
+    fmpz_init(na);
+    fmpz_init(nb);
+    _fmpz_vec_dot(qa, q, GV(c, a), 3);
+    _fmpz_vec_dot(qb, q, GV(c, b), 3);
+    sa = fmpz_sgn(qa);
+    sb = fmpz_sgn(qb);
+    if (sa != sb)
+        r = sa < sb;
+    else if (sa == 0)
+        r = 0;
+    else
+    {
+        /* Compare qa^2 |b|^2 with qb^2 |a|^2.  */
+        _fmpz_vec_dot(na, GV(c, a), GV(c, a), 3);
+        _fmpz_vec_dot(nb, GV(c, b), GV(c, b), 3);
+        fmpz_mul(qa, qa, qa);
+        fmpz_mul(qa, qa, nb);
+        fmpz_mul(qb, qb, qb);
+        fmpz_mul(qb, qb, na);
+        r = sa > 0 ? fmpz_cmp(qa, qb) < 0 : fmpz_cmp(qa, qb) > 0;
+    }
+    fmpz_clear(qa);
+    fmpz_clear(qb);
+    fmpz_clear(na);
+    fmpz_clear(nb);
+    return r;
+}
+
+/* 1 when the k generators span R^3 (q = their sum is 0 here).  */
+static int
+spans(const fmpz * G, slong k, fmpz * w, fmpz_t t)
+{
+    slong i;
+
+    for (i = 1; i < k; i++)
+    {
+        _wc_zvec3_cross(w, G, G + 3 * i);
+        if (!_fmpz_vec_is_zero(w, 3))
+            break;
+    }
+    for (i++; i < k; i++)
+        if (dot_sgn(w, G + 3 * i, t) != 0)
+            return 1;
+    return 0;
+}
+
+/* 1 when -q lies in pos(a, b, c).  */
+static int
+holds_minus_q(fan_ctx * c, const fmpz * q, const fmpz * a, const fmpz * b,
+              const fmpz * d)
+{
+    int s = det_sgn(a, b, d, c->t, c->u);
+
+    return s != 0 && s * det_sgn(q, b, d, c->t, c->u) <= 0
+        && s * det_sgn(a, q, d, c->t, c->u) <= 0
+        && s * det_sgn(a, b, q, c->t, c->u) <= 0;
+}
+
+/* The R^3 certificate: among the generators x with q . x < 0 (P, in
+   angular order), a = the first, b = the last within a half-turn of a,
+   d = the next; R^3 when -q lies in pos(a, b, d).  */
+static int
+space_by_triple(fan_ctx * c, const fmpz * q, const slong * P, slong p,
+                slong * L)
+{
+    slong n = 0, i, j;
+
+    for (i = 0; i < p; i++)
+        if (dot_sgn(q, GV(c, P[i]), c->t) < 0)
+            L[n++] = P[i];
+    if (n < 3)
+        return 0;
+    for (j = 1; j < n && dot_sgn(c->qx + 3 * L[0], GV(c, L[j]),
+                                           c->t) > 0; j++)
+        ;
+    if (j == 1 || j == n)
+        return 0;
+    return holds_minus_q(c, q, GV(c, L[0]), GV(c, L[j - 1]), GV(c, L[j]));
+}
+
+/* Keep, of each run of generators on one half-plane through q in the
+   sorted x[0..n), the one farthest from q; returns the new length.  */
+static slong
+outermost(fan_ctx * c, slong * x, slong n, fmpz * w)
+{
+    slong i, p = 0;
+
+    for (i = 0; i < n; i++)
+    {
+        if (p > 0 && c->half[x[p - 1]] == c->half[x[i]]
+            && dot_sgn(c->qx + 3 * x[p - 1], GV(c, x[i]),
+                                 c->t) == 0)
+        {
+            if (inner(c, x[p - 1], x[i], w))
+                x[p - 1] = x[i];
+            continue;
+        }
+        x[p++] = x[i];
+    }
+    return p;
+}
+
+/* Graham's scan of the cyclic polygon P[0..p) from P[s] (a hull vertex
+   when the cone is pointed) into S; returns the hull's size, or 0 when
+   the result is not a strictly convex polygon winding once around q.  */
+static slong
+scan(fan_ctx * c, const fmpz * q, const slong * P, slong p, slong s,
+     slong * S)
+{
+    slong i, m = 0;
+
+    for (i = 0; i < p; i++)
+    {
+        slong v = P[(s + i) % p];
+
+        while (m >= 2 && det_sgn(GV(c, S[m - 2]), GV(c, S[m - 1]), GV(c, v),
+                                 c->t, c->u) <= 0)
+            m--;
+        S[m++] = v;
+    }
+    while (m >= 3 && det_sgn(GV(c, S[m - 2]), GV(c, S[m - 1]), GV(c, S[0]),
+                             c->t, c->u) <= 0)
+        m--;
+    if (m < 3)
+        return 0;
+    for (i = 0; i < m; i++)
+    {
+        const fmpz * a = GV(c, S[i]), * b = GV(c, S[(i + 1) % m]);
+
+        if (det_sgn(q, a, b, c->t, c->u) <= 0
+            || det_sgn(GV(c, S[(i + m - 1) % m]), a, b, c->t, c->u) <= 0)
+            return 0;
+    }
+    return m;
+}
+
+/* The fan of the hull S[0..m): inward normals a x b summed into w; F is
+   set when w . g > 0 for every generator (the certificate).  */
+static int
+certify(_wc_fan3_t F, fan_ctx * c, const slong * S, slong m, slong k,
+        fmpz * w)
+{
+    fmpz * N = _fmpz_vec_init(3 * m);
+    slong i;
+    int ok = 1;
+
+    _fmpz_vec_zero(w, 3);
+    for (i = 0; i < m; i++)
+    {
+        fmpz * h = N + 3 * i;
+
+        _wc_zvec3_cross(h, GV(c, S[i]), GV(c, S[(i + 1) % m]));
+        _fmpz_vec_content(c->t, h, 3);
+        _fmpz_vec_scalar_divexact_fmpz(h, h, 3, c->t);
+        _fmpz_vec_add(w, w, h, 3);
+    }
+    for (i = 0; i < k && ok; i++)
+        ok = dot_sgn(w, GV(c, i), c->t) > 0;
+    if (!ok)
+    {
+        _fmpz_vec_clear(N, 3 * m);
+        return 0;
+    }
+    _wc_fan3_clear(F);
+    F->m = m;
+    F->rays = _fmpz_vec_init(3 * m);
+    F->facets = N;
+    for (i = 0; i < m; i++)
+    {
+        _fmpz_vec_set(F->rays + 3 * i, GV(c, S[i]), 3);
+        _fmpz_vec_neg(N + 3 * i, N + 3 * i, 3);
+    }
+    return 1;
+}
+
+/* q != 0, the generators span R^3, c->qx is set: the angular sort and
+   the scan.  x, y, z: k slots each.  */
+static int
+fan_axis(_wc_fan3_t F, fan_ctx * c, const fmpz * q, slong k, slong * x,
+         slong * y, slong * z, fmpz * w)
+{
+    fmpz * n = _fmpz_vec_init(3), * r = _fmpz_vec_init(3);
+    slong i, p = 0, g0 = -1, s, m;
+    int res = WC_FAN3_OTHER;
+
+    for (i = 0; i < k && g0 < 0; i++)
+        if (!_fmpz_vec_is_zero(c->qx + 3 * i, 3))
+            g0 = i;
+    _fmpz_vec_set(n, c->qx + 3 * g0, 3);
+    _wc_zvec3_cross(r, n, q);           /* toward g0 in the plane (q, g0) */
+    for (i = 0; i < k; i++)
+    {
+        int sg;
+
+        if (_fmpz_vec_is_zero(c->qx + 3 * i, 3))
+        {
+            if (dot_sgn(q, GV(c, i), c->t) < 0)
+            {
+                res = WC_FAN3_SPACE;    /* -q in the cone, q interior */
+                goto done;
+            }
+            continue;                   /* on the axis: not extreme */
+        }
+        sg = dot_sgn(n, GV(c, i), c->t);
+        c->half[i] = !(sg > 0
+                       || (sg == 0
+                           && dot_sgn(r, GV(c, i), c->t) > 0));
+        x[p++] = i;
+    }
+    sort_idx(c, x, y, p);
+    p = outermost(c, x, p, w);
+    if (p < 3)
+        goto done;
+    for (s = 0, i = 1; i < p; i++)
+        if (farther(c, q, x[i], x[s]))
+            s = i;
+    m = scan(c, q, x, p, s, z);
+    if (m >= 3 && certify(F, c, z, m, k, w))
+        res = WC_FAN3_POINTED;
+    else if (space_by_triple(c, q, x, p, y))
+        res = WC_FAN3_SPACE;
+
+done:
+    _fmpz_vec_clear(n, 3);
+    _fmpz_vec_clear(r, 3);
+    return res;
+}
+
+int
+_wc_fan3(_wc_fan3_t F, const fmpz * G, slong k)
+{
+    fan_ctx c;
+    fmpz * q, * w;
+    slong i, * x = NULL;
+    int res = WC_FAN3_OTHER, planar = 1;
+
+    if (k < 3)
+        return WC_FAN3_OTHER;
+    q = _fmpz_vec_init(3);
+    w = _fmpz_vec_init(3);
+    c.G = G;
+    c.qx = _fmpz_vec_init(3 * k);
+    c.half = malloc(k);
+    x = malloc(sizeof(slong) * 3 * k);
+    fmpz_init(c.t);
+    fmpz_init(c.u);
+    if (c.half == NULL || x == NULL)
+    {
+        res = WC_FAN3_NOMEM;
+        goto cleanup;
+    }
+    for (i = 0; i < k; i++)
+        _fmpz_vec_add(q, q, G + 3 * i, 3);
+    if (_fmpz_vec_is_zero(q, 3))
+    {
+        res = spans(G, k, w, c.t) ? WC_FAN3_SPACE : WC_FAN3_OTHER;
+        goto cleanup;
+    }
+    /* Rank 3 iff some generator leaves the plane of q and g0.  */
+    for (i = 0; i < k; i++)
+        _wc_zvec3_cross(c.qx + 3 * i, q, G + 3 * i);
+    for (i = 0; i < k && _fmpz_vec_is_zero(c.qx + 3 * i, 3); i++)
+        ;
+    if (i < k)
+    {
+        const fmpz * n = c.qx + 3 * i;
+
+        for (i = 0; i < k && planar; i++)
+            planar = dot_sgn(n, G + 3 * i, c.t) == 0;
+    }
+    if (!planar)
+        res = fan_axis(F, &c, q, k, x, x + k, x + 2 * k, w);
+
+cleanup:
+    _fmpz_vec_clear(q, 3);
+    _fmpz_vec_clear(w, 3);
+    _fmpz_vec_clear(c.qx, 3 * k);
+    free(c.half);
+    free(x);
+    fmpz_clear(c.t);
+    fmpz_clear(c.u);
+    return res;
+}

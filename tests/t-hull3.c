@@ -1,0 +1,349 @@
+/* t-hull3.c -- the O(k log k) 3-D kernel (fan3.c, cone3.c) against the
+   former O(k^2) kernel (ref-hull3.c, an independent copy) and cddlib.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   Seeded random generator sets, k = 0 .. a few hundred, in many layouts:
+   general, pointed, repeated and parallel generators, opposite pairs,
+   all coplanar, on one plane through the origin, lines, lineality 1 and
+   2, the whole R^3, many generators on one facet or one half-plane
+   through the axis, huge and tiny coordinates.  Both conversions
+   (V -> H and H -> V) must give the reference's rows as sets; the whole
+   canonical cone (fast path) must equal the one through cddlib and the
+   general route, field for field.  */
+
+#include <config.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include <flint/fmpz_vec.h>
+
+#include "wrenchcone.h"
+#include "testutil.h"
+#include "ref-hull3.h"
+#include "exact/hull3.h"
+#include "exact/cddbridge.h"
+
+enum { GENERAL, POINTED, DEGENERATE, COPLANAR, HALFSPACE, WEDGE, SPACE,
+       FACETRUN, AXISRUN, LAYOUTS };
+
+static const char * layout_name[] = { "general", "pointed", "degenerate",
+    "coplanar", "half-space", "wedge", "space", "facet-run", "axis-run" };
+
+static slong
+rnd(slong r)
+{
+    return wctest_randint(-r, r);
+}
+
+/* Row i of A := (x, y, z) / den, times 2^shift (huge) when shift > 0.  */
+static void
+set_row(fmpq_mat_t A, slong i, const slong * v, slong den, int shift)
+{
+    slong j;
+
+    for (j = 0; j < 3; j++)
+    {
+        fmpq * x = fmpq_mat_entry(A, i, j);
+
+        fmpq_set_si(x, v[j], den);
+        if (shift > 0)
+            fmpz_mul_2exp(fmpq_numref(x), fmpq_numref(x), shift);
+    }
+}
+
+/* Random generators R (k rows) and lines L in the given layout.  */
+static void
+make(fmpq_mat_t R, fmpq_mat_t L, int layout, slong k)
+{
+    slong i, j, r = wctest_chance(1, 3) ? 3 : 1000, nl = 0;
+    slong c[3], u[3], w[3], v[3], den = 1;
+    int shift = 0;
+
+    if (wctest_chance(1, 8))
+        shift = 100;                            /* huge */
+    else if (wctest_chance(1, 8))
+        den = 1000003;                          /* tiny */
+    for (j = 0; j < 3; j++)
+    {
+        c[j] = rnd(5);
+        u[j] = rnd(5);
+        w[j] = rnd(5);
+    }
+    if (c[0] == 0 && c[1] == 0 && c[2] == 0)
+        c[2] = 1;
+    if (layout == HALFSPACE)
+        nl = 2;
+    else if (layout == WEDGE)
+        nl = 1;
+    fmpq_mat_clear(R);
+    fmpq_mat_init(R, k, 3);
+    fmpq_mat_clear(L);
+    fmpq_mat_init(L, wctest_chance(1, 3) ? nl : 0, 3);
+    for (i = 0; i < fmpq_mat_nrows(L); i++)
+        set_row(L, i, i == 0 ? u : w, den, shift);
+    for (i = 0; i < k; i++)
+    {
+        slong a = rnd(r), b = rnd(r), t = wctest_randint(1, 4);
+
+        for (j = 0; j < 3; j++)
+            v[j] = rnd(r);
+        switch (layout)
+        {
+        case POINTED:
+        case FACETRUN:
+        case AXISRUN:
+            /* v . c > 0: flip, or push along c.  */
+            if (v[0] * c[0] + v[1] * c[1] + v[2] * c[2] < 0)
+                for (j = 0; j < 3; j++)
+                    v[j] = -v[j];
+            if (v[0] * c[0] + v[1] * c[1] + v[2] * c[2] == 0)
+                for (j = 0; j < 3; j++)
+                    v[j] += c[j];
+            if (layout == FACETRUN && i % 2 == 1)
+                for (j = 0; j < 3; j++)         /* on a segment a..b */
+                    v[j] = t * c[j] + (a > 0 ? 2 : 1) * u[j];
+            if (layout == AXISRUN && i % 2 == 1)
+                for (j = 0; j < 3; j++)         /* one half-plane */
+                    v[j] = t * c[j] + (a > 0 ? 3 : 1) * u[j];
+            break;
+        case COPLANAR:
+            for (j = 0; j < 3; j++)
+                v[j] = a * u[j] + b * w[j];
+            break;
+        case HALFSPACE:
+        case WEDGE:
+            /* one side of the plane of u and w (a wedge: of u) */
+            if (v[0] * c[0] + v[1] * c[1] + v[2] * c[2] < 0)
+                for (j = 0; j < 3; j++)
+                    v[j] = -v[j];
+            break;
+        case SPACE:
+            if (i < 4)
+                for (j = 0; j < 3; j++)
+                    v[j] = (i == 3 ? -1 : (j == i)) * (r == 3 ? 1 : 5);
+            break;
+        default:
+            break;
+        }
+        set_row(R, i, v, den, shift);
+        if (layout == DEGENERATE && i > 0 && wctest_chance(1, 2))
+        {
+            slong s = wctest_randint(0, i - 1), m = wctest_randint(-3, 3);
+
+            for (j = 0; j < 3; j++)
+                fmpq_mul_si(fmpq_mat_entry(R, i, j),
+                            fmpq_mat_entry(R, s, j), m == 0 ? 1 : m);
+        }
+    }
+}
+
+static int
+lex(const fmpz * a, const fmpz * b)
+{
+    slong j;
+    int c;
+
+    for (j = 0; j < 3; j++)
+        if ((c = fmpz_cmp(a + j, b + j)) != 0)
+            return c;
+    return 0;
+}
+
+/* S := the rows of A as sorted distinct primitive integer rows.  */
+static void
+row_set(fmpz_mat_t S, const fmpq_mat_t A)
+{
+    slong k;
+
+    if (!_wc_hull3_generators(S, &k, A, NULL))
+        wctest_fail("out of memory");
+    {
+        fmpz_mat_t T;
+        slong i, j;
+
+        fmpz_mat_init(T, k, 3);
+        for (i = 0; i < k; i++)
+            _fmpz_vec_set(T->rows[i], S->rows[i], 3);
+        /* insertion sort: fine for these sizes */
+        for (i = 1; i < k; i++)
+            for (j = i; j > 0 && lex(T->rows[j - 1], T->rows[j]) > 0; j--)
+                _fmpz_vec_swap(T->rows[j - 1], T->rows[j], 3);
+        fmpz_mat_swap(S, T);
+        fmpz_mat_clear(T);
+    }
+}
+
+/* 1 when A and B have the same row space.  */
+static int
+same_span(const fmpq_mat_t A, const fmpq_mat_t B)
+{
+    fmpq_mat_t RA, RB;
+    slong ra, rb, i, j;
+    int eq;
+
+    fmpq_mat_init(RA, fmpq_mat_nrows(A), 3);
+    fmpq_mat_init(RB, fmpq_mat_nrows(B), 3);
+    ra = fmpq_mat_nrows(A) ? fmpq_mat_rref(RA, A) : 0;
+    rb = fmpq_mat_nrows(B) ? fmpq_mat_rref(RB, B) : 0;
+    eq = ra == rb;
+    for (i = 0; i < ra && eq; i++)
+        for (j = 0; j < 3; j++)
+            eq = eq && fmpq_equal(fmpq_mat_entry(RA, i, j),
+                                  fmpq_mat_entry(RB, i, j));
+    fmpq_mat_clear(RA);
+    fmpq_mat_clear(RB);
+    return eq;
+}
+
+static void
+same_rows(const fmpq_mat_t A, const fmpq_mat_t B, const char * what,
+          int layout, slong k)
+{
+    fmpz_mat_t SA, SB;
+
+    fmpz_mat_init(SA, 0, 3);
+    fmpz_mat_init(SB, 0, 3);
+    row_set(SA, A);
+    row_set(SB, B);
+    if (!fmpz_mat_equal(SA, SB) || fmpz_mat_nrows(SA) != fmpz_mat_nrows(SB))
+        wctest_fail("%s differs from the reference (%s, k = %ld)", what,
+                    layout_name[layout], (long) k);
+    fmpz_mat_clear(SA);
+    fmpz_mat_clear(SB);
+}
+
+/* One random set: both conversions against the reference, the whole cone
+   against cddlib (use_cdd) and H -> V -> H round trips.  */
+static void
+check_one(int layout, slong k, int use_cdd)
+{
+    fmpq_mat_t R, L, E1, H1, E2, H2, R1, L1, R2, L2, S;
+    wc_cone_t C, D;
+    wc_error_t err;
+    slong i, j;
+
+    fmpq_mat_init(R, 0, 3);
+    fmpq_mat_init(L, 0, 3);
+    fmpq_mat_init(E1, 0, 3);
+    fmpq_mat_init(H1, 0, 3);
+    fmpq_mat_init(E2, 0, 3);
+    fmpq_mat_init(H2, 0, 3);
+    fmpq_mat_init(R1, 0, 3);
+    fmpq_mat_init(L1, 0, 3);
+    fmpq_mat_init(R2, 0, 3);
+    fmpq_mat_init(L2, 0, 3);
+    fmpq_mat_init(S, 0, 3);
+    wc_cone_init(C, 3);
+    wc_cone_init(D, 3);
+    wc_error_init(err);
+    make(R, L, layout, k);
+
+    /* V -> H.  */
+    if (_wc_hull3_v_to_h(E1, H1, R, L, err) != WC_OK)
+        wctest_fail("v_to_h: %s", err->message);
+    ref_hull3_v_to_h(E2, H2, R, L);
+    if (!same_span(E1, E2))
+        wctest_fail("v_to_h: equalities differ (%s, k = %ld)",
+                    layout_name[layout], (long) k);
+    same_rows(H1, H2, "v_to_h: facets", layout, k);
+
+    /* H -> V, the generators read as constraints (no equalities, and
+       with L as equalities).  */
+    if (_wc_hull3_h_to_v(R1, L1, NULL, R, err) != WC_OK)
+        wctest_fail("h_to_v: %s", err->message);
+    ref_hull3_h_to_v(R2, L2, NULL, R);
+    if (!same_span(L1, L2))
+        wctest_fail("h_to_v: lines differ (%s, k = %ld)",
+                    layout_name[layout], (long) k);
+    same_rows(R1, R2, "h_to_v: rays", layout, k);
+    if (_wc_hull3_h_to_v(R1, L1, L, R, err) != WC_OK)
+        wctest_fail("h_to_v: %s", err->message);
+    ref_hull3_h_to_v(R2, L2, L, R);
+    if (!same_span(L1, L2))
+        wctest_fail("h_to_v with equalities: lines differ (%s, k = %ld)",
+                    layout_name[layout], (long) k);
+    same_rows(R1, R2, "h_to_v with equalities: rays", layout, k);
+
+    /* The whole canonical cone, fast path against cddlib (or, for large
+       k, against the general route from the reference's H).  */
+    if (wc_cone_set_generators(C, R, L, err) != WC_OK)
+        wctest_fail("set_generators: %s", err->message);
+    if (use_cdd)
+    {
+        if (_wc_cone_set_generators_kernel(D, R, L, 1, err) != WC_OK)
+            wctest_fail("set_generators (cddlib): %s", err->message);
+        if (!wc_cone_equal(C, D))
+            wctest_fail("fast kernel and cddlib disagree on a cone from "
+                        "generators (%s, k = %ld)", layout_name[layout],
+                        (long) k);
+        /* The constraint side, with some rows strict.  */
+        fmpq_mat_init(S, 0, 3);
+        fmpq_mat_clear(S);
+        fmpq_mat_init(S, k > 0 ? wctest_randint(0, 2) : 0, 3);
+        for (i = 0; i < fmpq_mat_nrows(S); i++)
+            for (j = 0; j < 3; j++)
+                fmpq_set(fmpq_mat_entry(S, i, j),
+                         fmpq_mat_entry(R, wctest_randint(0, k - 1), j));
+        if (wc_cone_set_hrep(C, NULL, R, S, err) != WC_OK)
+            wctest_fail("set_hrep: %s", err->message);
+        if (_wc_cone_set_hrep_kernel(D, NULL, R, S, 1, err) != WC_OK)
+            wctest_fail("set_hrep (cddlib): %s", err->message);
+        if (!wc_cone_equal(C, D))
+            wctest_fail("fast kernel and cddlib disagree on a cone from "
+                        "constraints (%s, k = %ld)", layout_name[layout],
+                        (long) k);
+    }
+    else
+    {
+        /* cl pos(R) from the reference's constraints, the general
+           route's lineality and faces included: the same set.  */
+        if (wc_cone_set_hrep(D, E2, H2, NULL, err) != WC_OK)
+            wctest_fail("set_hrep: %s", err->message);
+        if (!wc_cone_equal(C, D))
+            wctest_fail("V -> H -> V changes the cone (%s, k = %ld)",
+                        layout_name[layout], (long) k);
+    }
+
+    fmpq_mat_clear(R);
+    fmpq_mat_clear(L);
+    fmpq_mat_clear(E1);
+    fmpq_mat_clear(H1);
+    fmpq_mat_clear(E2);
+    fmpq_mat_clear(H2);
+    fmpq_mat_clear(R1);
+    fmpq_mat_clear(L1);
+    fmpq_mat_clear(R2);
+    fmpq_mat_clear(L2);
+    fmpq_mat_clear(S);
+    wc_cone_clear(C);
+    wc_cone_clear(D);
+    wc_error_clear(err);
+}
+
+int
+main(void)
+{
+    slong iters, i;
+
+    wc_init();
+    wctest_init("t-hull3");
+    iters = wctest_iters(900);
+    for (i = 0; i < iters; i++)
+    {
+        int layout;
+        slong k;
+
+        if (!wctest_iter(i))
+            continue;
+        layout = (int) (i % LAYOUTS);
+        k = wctest_chance(1, 10) ? wctest_randint(40, 300)
+            : wctest_randint(0, 24);
+        check_one(layout, k, k <= 60 || i % 7 == 0);
+    }
+    flint_cleanup_master();
+    return 0;
+}
