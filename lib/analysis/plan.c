@@ -86,12 +86,6 @@ _wc_plan_check_size(const wc_problem_t P, int complete, wc_error_t err)
     return WC_OK;
 }
 
-/* Bit k of cell i's row of the membership matrix.  */
-#define IN(i, k) ((int) ((in[(i) * words + (k) / FLINT_BITS] \
-                          >> ((k) % FLINT_BITS)) & 1))
-#define IN_SET(i, k) (in[(i) * words + (k) / FLINT_BITS] \
-                      |= UWORD(1) << ((k) % FLINT_BITS))
-
 /* R->cells := the arrangement of every cone the plan is built from: the
    needed cones (R->cones), the goal state's stability cones (R->stab)
    and, for the complete plan, the outcome cones (R->outcomes).  */
@@ -174,60 +168,137 @@ plan_eq25(wc_plan_t R, const int * goal, fmpq * g)
     }
 }
 
+/* The cells of each needed cone, as its nonzero bitset words: cone k
+   has words wi[j] with bits wv[j] for off[k] <= j < off[k + 1].  */
+typedef struct
+{
+    slong * off, * wi;
+    ulong * wv;
+    slong len, alloc;
+}
+members;
+
+static int
+members_push(members * M, slong w, ulong x)
+{
+    if (M->len == M->alloc)
+    {
+        slong a = 2 * M->alloc + 1024;
+        slong * wi = realloc(M->wi, sizeof(slong) * a);
+        ulong * wv;
+
+        if (wi == NULL)
+            return 0;
+        M->wi = wi;
+        if ((wv = realloc(M->wv, sizeof(ulong) * a)) == NULL)
+            return 0;
+        M->wv = wv;
+        M->alloc = a;
+    }
+    M->wi[M->len] = w;
+    M->wv[M->len++] = x;
+    return 1;
+}
+
+/* M := the cells of each needed cone; cnt[i] := how many hold cell i.  */
+static int
+needed_members(members * M, slong * cnt, wc_plan_t R)
+{
+    slong nn = R->T->nneeded, k, w;
+    wc_cone_key * keys = _wc_cone_keys_init(R->cones, nn, R->cells);
+    wc_cell_bits X;
+    ulong * buf = NULL;
+    int ok = _wc_cell_bits_init(&X, R->cells);
+
+    M->off = malloc(sizeof(slong) * (nn + 1));
+    if (ok)
+        buf = malloc(sizeof(ulong) * (X.words + 1));
+    ok = ok && buf != NULL && M->off != NULL && keys != NULL;
+    for (k = 0; k < nn && ok; k++)
+    {
+        M->off[k] = M->len;
+        _wc_cone_key_cells(buf, keys + k, &X, R->cells);
+        for (w = 0; w < X.words && ok; w++)
+        {
+            ulong x = buf[w];
+
+            if (x == 0)
+                continue;
+            ok = members_push(M, w, x);
+            for (; x != 0; x &= x - 1)
+                cnt[w * FLINT_BITS + _wc_plan_ctz(x)]++;
+        }
+    }
+    if (ok)
+        M->off[nn] = M->len;
+    free(buf);
+    _wc_cell_bits_clear(&X);
+    _wc_cone_keys_clear(keys, nn);
+    return ok;
+}
+
+/* Is every cell of cone k (in M) held by another kept cone?  */
+static int
+members_covered(const members * M, const slong * cnt, slong k)
+{
+    slong j;
+
+    for (j = M->off[k]; j < M->off[k + 1]; j++)
+    {
+        ulong x;
+
+        for (x = M->wv[j]; x != 0; x &= x - 1)
+            if (cnt[M->wi[j] * FLINT_BITS + _wc_plan_ctz(x)] < 2)
+                return 0;
+    }
+    return 1;
+}
+
 /* Membership of every cell in every needed cone: goal[i] (malloc'd into
    *goalp) when cell i is in none, i.e. in G_goal; the needed cones that
    are exactly needed; eq. 25; and R->goal as a set.  */
 static int
 plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
 {
-    slong nn = R->T->nneeded, ncells = R->cells->count, i, k;
-    slong words = (nn + FLINT_BITS - 1) / FLINT_BITS;  /* a bit per cone */
-    wc_cone_key * keys = _wc_cone_keys_init(R->cones, nn, R->cells);
-    ulong * in = calloc((size_t) ncells * words + 1, sizeof(ulong));
+    slong nn = R->T->nneeded, ncells = R->cells->count, i, k, j;
     int * goal = *goalp = malloc(sizeof(int) * (ncells + 1));
-    slong * cnt = malloc(sizeof(slong) * (ncells + 1));
+    slong * cnt = calloc(ncells + 1, sizeof(slong));
+    members M;
     int status = WC_OK;
     fmpq g[3];
 
+    memset(&M, 0, sizeof(members));
     for (k = 0; k < 3; k++)
         fmpq_init(g + k);
-    if (in == NULL || goal == NULL || cnt == NULL)
+    R->exact_needed = malloc(sizeof(int) * (nn + 1));
+    if (goal == NULL || cnt == NULL || R->exact_needed == NULL
+        || !needed_members(&M, cnt, R))
     {
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                               "out of memory (%ld cells, %ld cones)",
                               (long) ncells, (long) nn);
         goto cleanup;
     }
-    /* cnt[i]: how many of the cones kept so far hold cell i */
     for (i = 0; i < ncells; i++)
-    {
-        _wc_plan_cell_point(g, R->cells, i);
-        cnt[i] = 0;
-        for (k = 0; k < nn; k++)
-            if (_wc_cone_key_contains(keys + k, R->cells, i, g))
-            {
-                IN_SET(i, k);
-                cnt[i]++;
-            }
         goal[i] = cnt[i] == 0;
-    }
 
     /* Exact redundancy, in ASCII order: drop a cone inside the union of
        the cones still kept, i.e. every cell of it held by another.  */
-    R->exact_needed = malloc(sizeof(int) * (nn + 1));
     R->nexact = nn;
     for (k = 0; k < nn; k++)
     {
-        int covered = 1;
+        int covered = members_covered(&M, cnt, k);
 
-        for (i = 0; i < ncells && covered; i++)
-            covered = !IN(i, k) || cnt[i] >= 2;
         R->exact_needed[k] = !covered;
-        if (covered)
+        if (!covered)
+            continue;
+        R->nexact--;
+        for (j = M.off[k]; j < M.off[k + 1]; j++)
         {
-            R->nexact--;
-            for (i = 0; i < ncells; i++)
-                cnt[i] -= IN(i, k);
+            ulong x;
+
+            for (x = M.wv[j]; x != 0; x &= x - 1)
+                cnt[M.wi[j] * FLINT_BITS + _wc_plan_ctz(x)]--;
         }
     }
 
@@ -235,9 +306,10 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
     if ((status = wc_set_from_cells(R->goal, R->cells, goal, err)) == WC_OK)
         status = wc_set_merge(R->goal, R->cells, err);
 cleanup:
-    _wc_cone_keys_clear(keys, nn);
+    free(M.off);
+    free(M.wi);
+    free(M.wv);
     free(cnt);
-    free(in);
     for (k = 0; k < 3; k++)
         fmpq_clear(g + k);
     return status;
