@@ -33,6 +33,7 @@ C_TESTS = \
 	tests/t-refplan \
 	tests/t-plan \
 	tests/t-plansound \
+	tests/t-planbits \
 	tests/t-draw \
 	tests/t-request
 check_PROGRAMS += $(C_TESTS) tests/corpus-check
