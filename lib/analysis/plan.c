@@ -315,36 +315,54 @@ cleanup:
     return status;
 }
 
+/* obits := the cells of each outcome cone (X->words words per cone).  */
+static int
+outcome_bits(ulong ** obits, slong * words, const wc_plan_t R)
+{
+    wc_cone_key * okeys = _wc_cone_keys_init(R->outcomes, R->noutcomes,
+                                             R->cells);
+    wc_cell_bits X;
+    slong k;
+    int ok = _wc_cell_bits_init(&X, R->cells);
+
+    *words = X.words;
+    if (ok)
+        *obits = malloc(sizeof(ulong) * ((size_t) X.words * R->noutcomes
+                                         + 1));
+    ok = ok && *obits != NULL && okeys != NULL;
+    for (k = 0; k < R->noutcomes && ok; k++)
+        _wc_cone_key_cells(*obits + k * X.words, okeys + k, &X, R->cells);
+    _wc_cell_bits_clear(&X);
+    _wc_cone_keys_clear(okeys, R->noutcomes);
+    return ok;
+}
+
 /* The complete plan: R->accepted, the cells whose outcomes make a graph
    the plan accepts, and R->extra, one of them outside G_goal.  */
 static int
 plan_accepted(wc_plan_t R, const wc_problem_t P, const int * goal,
               wc_error_t err)
 {
-    slong ncells = R->cells->count, full = (slong) 1 << P->n, i, k;
+    slong ncells = R->cells->count, full = (slong) 1 << P->n, i, k, words;
     unsigned char * member = malloc((size_t) R->noutcomes + 1);
     ulong * adj = malloc(sizeof(ulong) * full);
     int * acc = malloc(sizeof(int) * (ncells + 1));
-    wc_cone_key * okeys = NULL;
+    ulong * obits = NULL;
     int status = WC_OK;
-    fmpq g[3];
 
-    for (k = 0; k < 3; k++)
-        fmpq_init(g + k);
-    if (member == NULL || adj == NULL || acc == NULL)
+    if (member == NULL || adj == NULL || acc == NULL
+        || !outcome_bits(&obits, &words, R))
     {
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                               "out of memory");
         goto cleanup;
     }
-    okeys = _wc_cone_keys_init(R->outcomes, R->noutcomes, R->cells);
     R->has_extra = 0;
     for (i = 0; i < ncells; i++)
     {
-        _wc_plan_cell_point(g, R->cells, i);
         for (k = 0; k < R->noutcomes; k++)
             member[k] = (unsigned char)
-                _wc_cone_key_contains(okeys + k, R->cells, i, g);
+                ((obits[k * words + i / FLINT_BITS] >> (i % FLINT_BITS)) & 1);
         memset(adj, 0, sizeof(ulong) * full);
         _wc_plan_transitions(P->n, member, _wc_plan_add_adj, adj);
         acc[i] = _wc_plan_graph_verdict(adj, P->n, NULL, NULL)
@@ -353,8 +371,7 @@ plan_accepted(wc_plan_t R, const wc_problem_t P, const int * goal,
         {
             /* cells come by dimension: keep the last, a chamber if any */
             R->has_extra = 1;
-            for (k = 0; k < 3; k++)
-                fmpq_set(R->extra + k, g + k);
+            _wc_plan_cell_point(R->extra, R->cells, i);
         }
         if (goal[i] && !acc[i])
         {
@@ -368,12 +385,10 @@ plan_accepted(wc_plan_t R, const wc_problem_t P, const int * goal,
         == WC_OK)
         status = wc_set_merge(R->accepted, R->cells, err);
 cleanup:
-    _wc_cone_keys_clear(okeys, R->noutcomes);
+    free(obits);
     free(acc);
     free(member);
     free(adj);
-    for (k = 0; k < 3; k++)
-        fmpq_clear(g + k);
     return status;
 }
 
