@@ -169,12 +169,17 @@ plan_eq25(wc_plan_t R, const int * goal, fmpq * g)
 }
 
 /* The cells of each needed cone, as its nonzero bitset words: cone k
-   has words wi[j] with bits wv[j] for off[k] <= j < off[k + 1].  */
+   has words wi[j] with bits wv[j] for off[k] <= j < off[k + 1].  How
+   many kept cones hold each cell is a bit-sliced counter: bit i of
+   ctr[b * words + i / FLINT_BITS] is bit b of cell i's count (levels
+   bits), so a cone is added or removed a word of cells at a time.  */
 typedef struct
 {
     slong * off, * wi;
     ulong * wv;
     slong len, alloc;
+    ulong * ctr;
+    slong levels, words;
 }
 members;
 
@@ -200,9 +205,38 @@ members_push(members * M, slong w, ulong x)
     return 1;
 }
 
-/* M := the cells of each needed cone; cnt[i] := how many hold cell i.  */
+/* Add (sign 1) or remove (-1) the cells x of word w to the counts.  */
+static void
+members_count(members * M, slong w, ulong x, int sign)
+{
+    slong b;
+
+    for (b = 0; b < M->levels && x != 0; b++)
+    {
+        ulong * c = M->ctr + b * M->words + w;
+        ulong carry = sign > 0 ? *c & x : ~*c & x;
+
+        *c ^= x;
+        x = carry;
+    }
+}
+
+/* The cells of word w whose count is at least 2 (start 1) or nonzero
+   (start 0).  */
+static ulong
+members_at_least(const members * M, slong w, slong start)
+{
+    ulong r = 0;
+    slong b;
+
+    for (b = start; b < M->levels; b++)
+        r |= M->ctr[b * M->words + w];
+    return r;
+}
+
+/* M := the cells of each needed cone, counted.  */
 static int
-needed_members(members * M, slong * cnt, wc_plan_t R)
+needed_members(members * M, wc_plan_t R)
 {
     slong nn = R->T->nneeded, k, w;
     wc_cone_key * keys = _wc_cone_keys_init(R->cones, nn, R->cells);
@@ -210,24 +244,25 @@ needed_members(members * M, slong * cnt, wc_plan_t R)
     ulong * buf = NULL;
     int ok = _wc_cell_bits_init(&X, R->cells);
 
+    for (M->levels = 1; (WORD(1) << M->levels) <= nn; M->levels++)
+        ;
+    M->words = X.words;
     M->off = malloc(sizeof(slong) * (nn + 1));
+    M->ctr = calloc((size_t) M->levels * X.words + 1, sizeof(ulong));
     if (ok)
         buf = malloc(sizeof(ulong) * (X.words + 1));
-    ok = ok && buf != NULL && M->off != NULL && keys != NULL;
+    ok = ok && buf != NULL && M->off != NULL && M->ctr != NULL
+        && keys != NULL;
     for (k = 0; k < nn && ok; k++)
     {
         M->off[k] = M->len;
         _wc_cone_key_cells(buf, keys + k, &X, R->cells);
         for (w = 0; w < X.words && ok; w++)
-        {
-            ulong x = buf[w];
-
-            if (x == 0)
-                continue;
-            ok = members_push(M, w, x);
-            for (; x != 0; x &= x - 1)
-                cnt[w * FLINT_BITS + _wc_plan_ctz(x)]++;
-        }
+            if (buf[w] != 0)
+            {
+                ok = members_push(M, w, buf[w]);
+                members_count(M, w, buf[w], 1);
+            }
     }
     if (ok)
         M->off[nn] = M->len;
@@ -239,18 +274,13 @@ needed_members(members * M, slong * cnt, wc_plan_t R)
 
 /* Is every cell of cone k (in M) held by another kept cone?  */
 static int
-members_covered(const members * M, const slong * cnt, slong k)
+members_covered(const members * M, slong k)
 {
     slong j;
 
     for (j = M->off[k]; j < M->off[k + 1]; j++)
-    {
-        ulong x;
-
-        for (x = M->wv[j]; x != 0; x &= x - 1)
-            if (cnt[M->wi[j] * FLINT_BITS + _wc_plan_ctz(x)] < 2)
-                return 0;
-    }
+        if ((M->wv[j] & ~members_at_least(M, M->wi[j], 1)) != 0)
+            return 0;
     return 1;
 }
 
@@ -262,7 +292,6 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
 {
     slong nn = R->T->nneeded, ncells = R->cells->count, i, k, j;
     int * goal = *goalp = malloc(sizeof(int) * (ncells + 1));
-    slong * cnt = calloc(ncells + 1, sizeof(slong));
     members M;
     int status = WC_OK;
     fmpq g[3];
@@ -271,8 +300,7 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
     for (k = 0; k < 3; k++)
         fmpq_init(g + k);
     R->exact_needed = malloc(sizeof(int) * (nn + 1));
-    if (goal == NULL || cnt == NULL || R->exact_needed == NULL
-        || !needed_members(&M, cnt, R))
+    if (goal == NULL || R->exact_needed == NULL || !needed_members(&M, R))
     {
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                               "out of memory (%ld cells, %ld cones)",
@@ -280,26 +308,22 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
         goto cleanup;
     }
     for (i = 0; i < ncells; i++)
-        goal[i] = cnt[i] == 0;
+        goal[i] = ((members_at_least(&M, i / FLINT_BITS, 0)
+                    >> (i % FLINT_BITS)) & 1) == 0;
 
     /* Exact redundancy, in ASCII order: drop a cone inside the union of
        the cones still kept, i.e. every cell of it held by another.  */
     R->nexact = nn;
     for (k = 0; k < nn; k++)
     {
-        int covered = members_covered(&M, cnt, k);
+        int covered = members_covered(&M, k);
 
         R->exact_needed[k] = !covered;
         if (!covered)
             continue;
         R->nexact--;
         for (j = M.off[k]; j < M.off[k + 1]; j++)
-        {
-            ulong x;
-
-            for (x = M.wv[j]; x != 0; x &= x - 1)
-                cnt[M.wi[j] * FLINT_BITS + _wc_plan_ctz(x)]--;
-        }
+            members_count(&M, M.wi[j], M.wv[j], -1);
     }
 
     plan_eq25(R, goal, g);
@@ -309,7 +333,7 @@ cleanup:
     free(M.off);
     free(M.wi);
     free(M.wv);
-    free(cnt);
+    free(M.ctr);
     for (k = 0; k < 3; k++)
         fmpq_clear(g + k);
     return status;

@@ -180,8 +180,12 @@ by_faces(ulong * out, const ulong * cand, const wc_cone_key * K,
                 if (s[K->plane[j]] == 0)
                     tight[j / FLINT_BITS] |= UWORD(1) << (j % FLINT_BITS);
             for (f = 0; f < nfaces; f++)
-                if (memcmp(tab + f * fw, tight, sizeof(ulong) * fw) == 0)
+            {
+                for (j = 0; j < fw && tab[f * fw + j] == tight[j]; j++)
+                    ;
+                if (j == fw)
                     break;
+            }
             if (f < nfaces && K->C->faces[f].included)
                 out[w] |= UWORD(1) << (i % FLINT_BITS);
         }
