@@ -15,7 +15,8 @@
    compared with wc_cone_contains at the cell's point (the face lattice,
    the deliberate independent reference) and with _wc_cone_key_contains,
    at every cell when there are few, else at a seeded sample of them and
-   of the lower-dimensional cells the bitset holds.  */
+   of the lower-dimensional cells the bitset holds; and wc_plan's G_goal
+   and exact redundancy against per-cell counts (check_plan).  */
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -31,7 +32,7 @@
 
 #define BIT(b, i) ((int) (((b)[(i) / FLINT_BITS] >> ((i) % FLINT_BITS)) & 1))
 
-static slong checked, boundary;
+static slong checked, boundary, plans;
 
 /* Compare the bit of cell i of cone k with both references.  */
 static void
@@ -117,6 +118,71 @@ check_foreign(const wc_problem_t P, const wc_cells_t A)
     wc_error_clear(err);
 }
 
+/* wc_plan's G_goal cells and exact redundancy (bitsets and bit-sliced
+   counters) against the per-cell counts they replace, recomputed here
+   from wc_cone_contains (the deliberate independent copy of the old
+   path): cell i is in G_goal iff no needed cone holds it; in ASCII order
+   a needed cone is dropped when every cell of it is held by another cone
+   still kept.  */
+static void
+check_plan(const wc_problem_t P)
+{
+    wc_plan_t R;
+    wc_error_t err;
+    slong i, k, nn, * cnt;
+    int * in;
+    fmpq g[3];
+
+    wc_plan_init(R);
+    wc_error_init(err);
+    if (wc_plan(R, P, 0, err) != WC_OK)
+        wctest_fail_problem(P, NULL, "wc_plan: %s", err->message);
+    nn = R->T->nneeded;
+    if (R->cells->count * nn > 200000)
+    {
+        wc_plan_clear(R);
+        wc_error_clear(err);
+        return;
+    }
+    cnt = calloc(R->cells->count + 1, sizeof(slong));
+    in = malloc(sizeof(int) * (R->cells->count * nn + 1));
+    for (k = 0; k < 3; k++)
+        fmpq_init(g + k);
+    for (i = 0; i < R->cells->count; i++)
+    {
+        _wc_plan_cell_point(g, R->cells, i);
+        for (k = 0; k < nn; k++)
+        {
+            in[i * nn + k] = wc_cone_contains(R->cones + k, g);
+            cnt[i] += in[i * nn + k];
+        }
+        if ((cnt[i] == 0) != wc_set_contains(R->goal, g))
+            wctest_fail_problem(P, NULL, "cell %ld: G_goal %d, by the "
+                                "cones %d", (long) i,
+                                wc_set_contains(R->goal, g), cnt[i] == 0);
+    }
+    for (k = 0; k < nn; k++)
+    {
+        int covered = 1;
+
+        for (i = 0; i < R->cells->count && covered; i++)
+            covered = !in[i * nn + k] || cnt[i] >= 2;
+        if (R->exact_needed[k] != !covered)
+            wctest_fail_problem(P, NULL, "needed cone %ld: exactly needed "
+                                "%d, by the cones %d", (long) k,
+                                R->exact_needed[k], !covered);
+        for (i = 0; i < R->cells->count && covered; i++)
+            cnt[i] -= in[i * nn + k];
+    }
+    plans++;
+    for (k = 0; k < 3; k++)
+        fmpq_clear(g + k);
+    free(in);
+    free(cnt);
+    wc_plan_clear(R);
+    wc_error_clear(err);
+}
+
 static void
 check_problem(const wc_problem_t P)
 {
@@ -181,10 +247,12 @@ main(void)
         wc_problem_init(P);
         wctest_random_problem(P, 1, nmax);
         check_problem(P);
+        check_plan(P);
         wc_problem_clear(P);
     }
     printf("t-planbits: %ld problems, %ld cell memberships checked (%ld on "
-           "a boundary)\n", (long) iters, (long) checked, (long) boundary);
+           "a boundary), %ld plans recounted\n", (long) iters,
+           (long) checked, (long) boundary, (long) plans);
     flint_cleanup();
     return 0;
 }
