@@ -104,6 +104,11 @@ literal(const wc_problem_t P, const wc_plan_t R, int * differ,
     if (wc_plan_strings(T, P->n, err) != WC_OK
         || wc_problem_set(Q, P) != WC_OK)
         wcbench_die("bench-plan", "strings", err);
+    /* the plan model: an m contact may stick or slide, |c_t| <=
+       max(mu_s, mu_k) c_n */
+    for (k = 0; k < Q->n; k++)
+        if (fmpq_cmp(Q->fixels[k].mu_k, Q->fixels[k].mu_s) > 0)
+            fmpq_set(Q->fixels[k].mu_s, Q->fixels[k].mu_k);
     C = malloc(sizeof(wc_cone_struct) * T->nstrings);
     for (i = 0; i < T->nstrings; i++)
     {

@@ -38,6 +38,7 @@ C_TESTS = \
 	tests/t-refplan \
 	tests/t-plan \
 	tests/t-plansound \
+	tests/t-planbits \
 	tests/t-draw \
 	tests/t-request \
 	tests/t-decimals

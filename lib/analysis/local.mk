@@ -19,6 +19,7 @@ lib_libwc_la_SOURCES += \
 	lib/analysis/plancert.c \
 	lib/analysis/planstr.c \
 	lib/analysis/plancones.c \
+	lib/analysis/planbits.c \
 	lib/analysis/plangraph.c \
 	lib/analysis/plan.c \
 	lib/analysis/robust.c \

@@ -86,12 +86,6 @@ _wc_plan_check_size(const wc_problem_t P, int complete, wc_error_t err)
     return WC_OK;
 }
 
-/* Bit k of cell i's row of the membership matrix.  */
-#define IN(i, k) ((int) ((in[(i) * words + (k) / FLINT_BITS] \
-                          >> ((k) % FLINT_BITS)) & 1))
-#define IN_SET(i, k) (in[(i) * words + (k) / FLINT_BITS] \
-                      |= UWORD(1) << ((k) % FLINT_BITS))
-
 /* R->cells := the arrangement of every cone the plan is built from: the
    needed cones (R->cones), the goal state's stability cones (R->stab)
    and, for the complete plan, the outcome cones (R->outcomes).  */
@@ -174,73 +168,197 @@ plan_eq25(wc_plan_t R, const int * goal, fmpq * g)
     }
 }
 
+/* The cells of each needed cone, as its nonzero bitset words: cone k
+   has words wi[j] with bits wv[j] for off[k] <= j < off[k + 1].  How
+   many kept cones hold each cell is a bit-sliced counter: bit i of
+   ctr[b * words + i / FLINT_BITS] is bit b of cell i's count (levels
+   bits), so a cone is added or removed a word of cells at a time.  */
+typedef struct
+{
+    slong * off, * wi;
+    ulong * wv;
+    slong len, alloc;
+    ulong * ctr;
+    slong levels, words;
+}
+members;
+
+static int
+members_push(members * M, slong w, ulong x)
+{
+    if (M->len == M->alloc)
+    {
+        slong a = 2 * M->alloc + 1024;
+        slong * wi = realloc(M->wi, sizeof(slong) * a);
+        ulong * wv;
+
+        if (wi == NULL)
+            return 0;
+        M->wi = wi;
+        if ((wv = realloc(M->wv, sizeof(ulong) * a)) == NULL)
+            return 0;
+        M->wv = wv;
+        M->alloc = a;
+    }
+    M->wi[M->len] = w;
+    M->wv[M->len++] = x;
+    return 1;
+}
+
+/* Add (sign 1) or remove (-1) the cells x of word w to the counts.  */
+static void
+members_count(members * M, slong w, ulong x, int sign)
+{
+    slong b;
+
+    for (b = 0; b < M->levels && x != 0; b++)
+    {
+        ulong * c = M->ctr + b * M->words + w;
+        ulong carry = sign > 0 ? *c & x : ~*c & x;
+
+        *c ^= x;
+        x = carry;
+    }
+}
+
+/* The cells of word w whose count is at least 2 (start 1) or nonzero
+   (start 0).  */
+static ulong
+members_at_least(const members * M, slong w, slong start)
+{
+    ulong r = 0;
+    slong b;
+
+    for (b = start; b < M->levels; b++)
+        r |= M->ctr[b * M->words + w];
+    return r;
+}
+
+/* M := the cells of each needed cone, counted.  */
+static int
+needed_members(members * M, wc_plan_t R)
+{
+    slong nn = R->T->nneeded, k, w;
+    wc_cone_key * keys = _wc_cone_keys_init(R->cones, nn, R->cells);
+    wc_cell_bits X;
+    ulong * buf = NULL;
+    int ok = _wc_cell_bits_init(&X, R->cells);
+
+    for (M->levels = 1; (WORD(1) << M->levels) <= nn; M->levels++)
+        ;
+    M->words = X.words;
+    M->off = malloc(sizeof(slong) * (nn + 1));
+    M->ctr = calloc((size_t) M->levels * X.words + 1, sizeof(ulong));
+    if (ok)
+        buf = malloc(sizeof(ulong) * (X.words + 1));
+    ok = ok && buf != NULL && M->off != NULL && M->ctr != NULL
+        && keys != NULL;
+    for (k = 0; k < nn && ok; k++)
+    {
+        M->off[k] = M->len;
+        _wc_cone_key_cells(buf, keys + k, &X, R->cells);
+        for (w = 0; w < X.words && ok; w++)
+            if (buf[w] != 0)
+            {
+                ok = members_push(M, w, buf[w]);
+                members_count(M, w, buf[w], 1);
+            }
+    }
+    if (ok)
+        M->off[nn] = M->len;
+    free(buf);
+    _wc_cell_bits_clear(&X);
+    _wc_cone_keys_clear(keys, nn);
+    return ok;
+}
+
+/* Is every cell of cone k (in M) held by another kept cone?  */
+static int
+members_covered(const members * M, slong k)
+{
+    slong j;
+
+    for (j = M->off[k]; j < M->off[k + 1]; j++)
+        if ((M->wv[j] & ~members_at_least(M, M->wi[j], 1)) != 0)
+            return 0;
+    return 1;
+}
+
 /* Membership of every cell in every needed cone: goal[i] (malloc'd into
    *goalp) when cell i is in none, i.e. in G_goal; the needed cones that
    are exactly needed; eq. 25; and R->goal as a set.  */
 static int
 plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
 {
-    slong nn = R->T->nneeded, ncells = R->cells->count, i, k;
-    slong words = (nn + FLINT_BITS - 1) / FLINT_BITS;  /* a bit per cone */
-    wc_cone_key * keys = _wc_cone_keys_init(R->cones, nn, R->cells);
-    ulong * in = calloc((size_t) ncells * words + 1, sizeof(ulong));
+    slong nn = R->T->nneeded, ncells = R->cells->count, i, k, j;
     int * goal = *goalp = malloc(sizeof(int) * (ncells + 1));
-    slong * cnt = malloc(sizeof(slong) * (ncells + 1));
+    members M;
     int status = WC_OK;
     fmpq g[3];
 
+    memset(&M, 0, sizeof(members));
     for (k = 0; k < 3; k++)
         fmpq_init(g + k);
-    if (in == NULL || goal == NULL || cnt == NULL)
+    R->exact_needed = malloc(sizeof(int) * (nn + 1));
+    if (goal == NULL || R->exact_needed == NULL || !needed_members(&M, R))
     {
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                               "out of memory (%ld cells, %ld cones)",
                               (long) ncells, (long) nn);
         goto cleanup;
     }
-    /* cnt[i]: how many of the cones kept so far hold cell i */
     for (i = 0; i < ncells; i++)
-    {
-        _wc_plan_cell_point(g, R->cells, i);
-        cnt[i] = 0;
-        for (k = 0; k < nn; k++)
-            if (_wc_cone_key_contains(keys + k, R->cells, i, g))
-            {
-                IN_SET(i, k);
-                cnt[i]++;
-            }
-        goal[i] = cnt[i] == 0;
-    }
+        goal[i] = ((members_at_least(&M, i / FLINT_BITS, 0)
+                    >> (i % FLINT_BITS)) & 1) == 0;
 
     /* Exact redundancy, in ASCII order: drop a cone inside the union of
        the cones still kept, i.e. every cell of it held by another.  */
-    R->exact_needed = malloc(sizeof(int) * (nn + 1));
     R->nexact = nn;
     for (k = 0; k < nn; k++)
     {
-        int covered = 1;
+        int covered = members_covered(&M, k);
 
-        for (i = 0; i < ncells && covered; i++)
-            covered = !IN(i, k) || cnt[i] >= 2;
         R->exact_needed[k] = !covered;
-        if (covered)
-        {
-            R->nexact--;
-            for (i = 0; i < ncells; i++)
-                cnt[i] -= IN(i, k);
-        }
+        if (!covered)
+            continue;
+        R->nexact--;
+        for (j = M.off[k]; j < M.off[k + 1]; j++)
+            members_count(&M, M.wi[j], M.wv[j], -1);
     }
 
     plan_eq25(R, goal, g);
     if ((status = wc_set_from_cells(R->goal, R->cells, goal, err)) == WC_OK)
         status = wc_set_merge(R->goal, R->cells, err);
 cleanup:
-    _wc_cone_keys_clear(keys, nn);
-    free(cnt);
-    free(in);
+    free(M.off);
+    free(M.wi);
+    free(M.wv);
+    free(M.ctr);
     for (k = 0; k < 3; k++)
         fmpq_clear(g + k);
     return status;
+}
+
+/* obits := the cells of each outcome cone (X->words words per cone).  */
+static int
+outcome_bits(ulong ** obits, slong * words, const wc_plan_t R)
+{
+    wc_cone_key * okeys = _wc_cone_keys_init(R->outcomes, R->noutcomes,
+                                             R->cells);
+    wc_cell_bits X;
+    slong k;
+    int ok = _wc_cell_bits_init(&X, R->cells);
+
+    *words = X.words;
+    if (ok)
+        *obits = malloc(sizeof(ulong) * ((size_t) X.words * R->noutcomes
+                                         + 1));
+    ok = ok && *obits != NULL && okeys != NULL;
+    for (k = 0; k < R->noutcomes && ok; k++)
+        _wc_cone_key_cells(*obits + k * X.words, okeys + k, &X, R->cells);
+    _wc_cell_bits_clear(&X);
+    _wc_cone_keys_clear(okeys, R->noutcomes);
+    return ok;
 }
 
 /* The complete plan: R->accepted, the cells whose outcomes make a graph
@@ -249,30 +367,26 @@ static int
 plan_accepted(wc_plan_t R, const wc_problem_t P, const int * goal,
               wc_error_t err)
 {
-    slong ncells = R->cells->count, full = (slong) 1 << P->n, i, k;
+    slong ncells = R->cells->count, full = (slong) 1 << P->n, i, k, words;
     unsigned char * member = malloc((size_t) R->noutcomes + 1);
     ulong * adj = malloc(sizeof(ulong) * full);
     int * acc = malloc(sizeof(int) * (ncells + 1));
-    wc_cone_key * okeys = NULL;
+    ulong * obits = NULL;
     int status = WC_OK;
-    fmpq g[3];
 
-    for (k = 0; k < 3; k++)
-        fmpq_init(g + k);
-    if (member == NULL || adj == NULL || acc == NULL)
+    if (member == NULL || adj == NULL || acc == NULL
+        || !outcome_bits(&obits, &words, R))
     {
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                               "out of memory");
         goto cleanup;
     }
-    okeys = _wc_cone_keys_init(R->outcomes, R->noutcomes, R->cells);
     R->has_extra = 0;
     for (i = 0; i < ncells; i++)
     {
-        _wc_plan_cell_point(g, R->cells, i);
         for (k = 0; k < R->noutcomes; k++)
             member[k] = (unsigned char)
-                _wc_cone_key_contains(okeys + k, R->cells, i, g);
+                ((obits[k * words + i / FLINT_BITS] >> (i % FLINT_BITS)) & 1);
         memset(adj, 0, sizeof(ulong) * full);
         _wc_plan_transitions(P->n, member, _wc_plan_add_adj, adj);
         acc[i] = _wc_plan_graph_verdict(adj, P->n, NULL, NULL)
@@ -281,8 +395,7 @@ plan_accepted(wc_plan_t R, const wc_problem_t P, const int * goal,
         {
             /* cells come by dimension: keep the last, a chamber if any */
             R->has_extra = 1;
-            for (k = 0; k < 3; k++)
-                fmpq_set(R->extra + k, g + k);
+            _wc_plan_cell_point(R->extra, R->cells, i);
         }
         if (goal[i] && !acc[i])
         {
@@ -296,12 +409,10 @@ plan_accepted(wc_plan_t R, const wc_problem_t P, const int * goal,
         == WC_OK)
         status = wc_set_merge(R->accepted, R->cells, err);
 cleanup:
-    _wc_cone_keys_clear(okeys, R->noutcomes);
+    free(obits);
     free(acc);
     free(member);
     free(adj);
-    for (k = 0; k < 3; k++)
-        fmpq_clear(g + k);
     return status;
 }
 

@@ -72,6 +72,47 @@ void _wc_cone_keys_clear(wc_cone_key * K, slong count);
 int _wc_cone_key_contains(const wc_cone_key * K, const wc_cells_t A,
                           slong i, const fmpq * g);
 
+/* The same for every cell at once (planbits.c): the cells' signs on
+   each plane as three bitsets (-, 0, +) over the cells, bit i of word
+   i / FLINT_BITS for cell i; a cone is a few ANDs of them, and only its
+   boundary cells reach wc_cone_contains.  */
+typedef struct
+{
+    slong count, nplanes, words;
+    ulong * bits;           /* 3 nplanes words-word bitsets */
+    ulong * cand, * strict; /* scratch */
+    fmpq g[3];
+}
+wc_cell_bits;
+
+/* X := the index of the cells A (kept by reference for nothing: A must
+   be passed again below).  Returns 1, or 0 when out of memory (clear X
+   in both cases).  */
+/* The index of the lowest set bit of x != 0.  */
+static inline slong
+_wc_plan_ctz(ulong x)
+{
+#if defined(__GNUC__)
+    return (slong) __builtin_ctzll((unsigned long long) x);
+#else
+    slong c = 0;
+
+    for (; (x & 0xff) == 0; x >>= 8)
+        c += 8;
+    for (; (x & 1) == 0; x >>= 1)
+        c++;
+    return c;
+#endif
+}
+
+int _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A);
+void _wc_cell_bits_clear(wc_cell_bits * X);
+
+/* out (X->words words) := the cells of A in K's cone, bit i for cell i:
+   bit i is _wc_cone_key_contains(K, A, i, point of cell i).  */
+void _wc_cone_key_cells(ulong * out, const wc_cone_key * K,
+                        wc_cell_bits * X, const wc_cells_t A);
+
 /* The complete plan's transition graph (plangraph.c).  States are bit
    masks; n <= 6, so a state's successors fit in one ulong.  */
 typedef void (* wc_plan_edge_fn)(void * ctx, ulong from, ulong to,

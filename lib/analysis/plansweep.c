@@ -74,6 +74,36 @@ wc_critical_clear(wc_critical_t C)
         fmpq_clear(C->lo_witness + k);
 }
 
+/* *inside := the cells of A in one of the count cones of K (a bitset,
+   malloc'd).  */
+static int
+cones_union(ulong ** inside, const wc_cone_key * K, slong count,
+            const wc_cells_t A, wc_error_t err)
+{
+    wc_cell_bits X;
+    ulong * buf = NULL;
+    slong k, w;
+    int ok = _wc_cell_bits_init(&X, A);
+
+    if (ok)
+    {
+        buf = malloc(sizeof(ulong) * (X.words + 1));
+        *inside = calloc(X.words + 1, sizeof(ulong));
+    }
+    ok = ok && buf != NULL && *inside != NULL && K != NULL;
+    for (k = 0; k < count && ok; k++)
+    {
+        _wc_cone_key_cells(buf, K + k, &X, A);
+        for (w = 0; w < X.words; w++)
+            (*inside)[w] |= buf[w];
+    }
+    free(buf);
+    _wc_cell_bits_clear(&X);
+    return ok ? WC_OK : wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                     "out of memory (%ld cells)",
+                                     (long) A->count);
+}
+
 /* Whether G_goal of P at friction mu is empty, with a wrench in it when
    not: the needed cones and their arrangement only.  */
 static int
@@ -85,16 +115,14 @@ goal_empty(int * empty, fmpq * witness, const wc_plan_strings_t T,
     wc_cells_t cells;
     fmpz_mat_t planes;
     wc_cone_key * keys = NULL;
+    ulong * inside = NULL;
     slong np = 0, i, k, nn = T->nneeded;
-    fmpq g[3];
     int status;
 
     wc_problem_init(Q);
     wc_cells_init(cells);
     fmpz_mat_init(planes, 0, 3);
     C = _wc_plan_cones_init(nn);
-    for (k = 0; k < 3; k++)
-        fmpq_init(g + k);
     if ((status = with_friction(Q, P, mu)) != WC_OK)
     {
         wc_error_set(err, status, NULL, 0, 0, "out of memory");
@@ -107,27 +135,21 @@ goal_empty(int * empty, fmpq * witness, const wc_plan_strings_t T,
     _wc_plan_cells_build(cells, &status, planes, np, err);
     if (status != WC_OK)
         goto cleanup;
-    *empty = 1;
     keys = _wc_cone_keys_init(C, nn, cells);
+    if ((status = cones_union(&inside, keys, nn, cells, err)) != WC_OK)
+        goto cleanup;
     /* the chambers come last; a witness there is the most telling */
+    *empty = 1;
     for (i = cells->count - 1; i >= 0 && *empty; i--)
-    {
-        _wc_plan_cell_point(g, cells, i);
-        for (k = 0; k < nn; k++)
-            if (_wc_cone_key_contains(keys + k, cells, i, g))
-                break;
-        if (k == nn)
+        if (((inside[i / FLINT_BITS] >> (i % FLINT_BITS)) & 1) == 0)
         {
             *empty = 0;
-            for (k = 0; k < 3; k++)
-                fmpq_set(witness + k, g + k);
+            _wc_plan_cell_point(witness, cells, i);
         }
-    }
 
 cleanup:
+    free(inside);
     _wc_cone_keys_clear(keys, nn);
-    for (k = 0; k < 3; k++)
-        fmpq_clear(g + k);
     _wc_plan_cones_clear(C, nn);
     fmpz_mat_clear(planes);
     wc_cells_clear(cells);

@@ -1,0 +1,229 @@
+/* planbits.c -- which cells of an arrangement lie in a cone, for all
+   cells at once, as a bitset.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   The cells are indexed by their sign on every plane: for plane p, three
+   bitsets over the cells (sign -, 0, +).  A cone whose facets and
+   equalities are planes of the arrangement holds no cell outside the AND
+   of one or two of them per facet and equality, and every cell strictly
+   inside each facet when its relative interior belongs to it; so a cone
+   costs a few passes over count / FLINT_BITS words, and the face lattice
+   (wc_cone_contains) is asked about the cells on its boundary only.  The
+   answers are those of _wc_cone_key_contains, cell by cell.  */
+
+#include <config.h>
+
+#include <stdlib.h>
+#include <string.h>
+
+#include <flint/fmpz_vec.h>
+
+#include "analysis/planparts.h"
+
+#define BITS(X, p, s) ((X)->bits + (3 * (p) + (s) + 1) * (X)->words)
+
+int
+_wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
+{
+    slong i, p, np = A->nplanes, k;
+
+    memset(X, 0, sizeof(wc_cell_bits));
+    X->count = A->count;
+    X->nplanes = np;
+    X->words = (A->count + FLINT_BITS - 1) / FLINT_BITS;
+    for (k = 0; k < 3; k++)
+        fmpq_init(X->g + k);
+    X->bits = calloc((size_t) 3 * np * X->words + 1, sizeof(ulong));
+    X->cand = malloc(sizeof(ulong) * (X->words + 1));
+    X->strict = malloc(sizeof(ulong) * (X->words + 1));
+    if (X->bits == NULL || X->cand == NULL || X->strict == NULL)
+        return 0;
+    for (i = 0; i < A->count; i++)
+    {
+        const signed char * s = A->sign + i * np;
+        ulong bit = UWORD(1) << (i % FLINT_BITS);
+        slong w = i / FLINT_BITS;
+
+        for (p = 0; p < np; p++)
+            BITS(X, p, s[p])[w] |= bit;
+    }
+    return 1;
+}
+
+void
+_wc_cell_bits_clear(wc_cell_bits * X)
+{
+    slong k;
+
+    for (k = 0; k < 3; k++)
+        fmpq_clear(X->g + k);
+    free(X->bits);
+    free(X->cand);
+    free(X->strict);
+    memset(X, 0, sizeof(wc_cell_bits));
+}
+
+/* cand &= the cells on the side orient * sign <= 0 of plane p (sign 0
+   for an equality: eq != 0); strict &= the cells strictly inside.  */
+static void
+and_facet(wc_cell_bits * X, slong p, int orient, int eq)
+{
+    const ulong * z = BITS(X, p, 0);
+    const ulong * in = orient > 0 ? BITS(X, p, -1) : BITS(X, p, 1);
+    slong w;
+
+    if (eq)
+    {
+        for (w = 0; w < X->words; w++)
+        {
+            X->cand[w] &= z[w];
+            X->strict[w] &= z[w];
+        }
+        return;
+    }
+    if (orient == 0)
+    {
+        /* a zero normal: every cell is on it, none strictly inside */
+        memset(X->strict, 0, sizeof(ulong) * X->words);
+        return;
+    }
+    for (w = 0; w < X->words; w++)
+    {
+        X->cand[w] &= z[w] | in[w];
+        X->strict[w] &= in[w];
+    }
+}
+
+/* out := cand & the cells of the bitset that lie in K's cone by the face
+   lattice, one wc_cone_contains per cell.  */
+static void
+by_lattice(ulong * out, const ulong * cand, const wc_cone_key * K,
+           wc_cell_bits * X, const wc_cells_t A)
+{
+    slong w;
+
+    for (w = 0; w < X->words; w++)
+    {
+        ulong x = cand[w];
+
+        while (x != 0)
+        {
+            slong i = w * FLINT_BITS + _wc_plan_ctz(x);
+
+            x &= x - 1;
+            _wc_plan_cell_point(X->g, A, i);
+            if (wc_cone_contains(K->C, X->g))
+                out[w] |= UWORD(1) << (i % FLINT_BITS);
+        }
+    }
+}
+
+/* tab[f * fw ..] := the facets of K's cone (bits, fw words) that hold
+   face f of it: those orthogonal to every ray of the face.  */
+static void
+face_facets(ulong * tab, slong fw, const wc_cone_key * K)
+{
+    const wc_cone_struct * C = K->C;
+    slong f, j, r;
+    fmpz_t t;
+
+    fmpz_init(t);
+    memset(tab, 0, sizeof(ulong) * fw * C->nfaces);
+    for (f = 0; f < C->nfaces; f++)
+        for (j = 0; j < K->nf; j++)
+        {
+            const wc_face_struct * F = C->faces + f;
+
+            for (r = 0; r < F->nrays; r++)
+            {
+                _fmpz_vec_dot(t, C->ineqs->rows[j], C->rays->rows[F->rays[r]],
+                              3);
+                if (!fmpz_is_zero(t))
+                    break;
+            }
+            if (r == F->nrays)
+                tab[f * fw + j / FLINT_BITS] |= UWORD(1) << (j % FLINT_BITS);
+        }
+    fmpz_clear(t);
+}
+
+/* out |= the cells of cand (in the closure of K's cone) whose face is
+   included: the face holding a point of the closure is the one whose
+   facets are exactly those the point lies on (wc_cone_locate finds the
+   same face by its rays).  Returns 0 when out of memory.  */
+static int
+by_faces(ulong * out, const ulong * cand, const wc_cone_key * K,
+         wc_cell_bits * X, const wc_cells_t A)
+{
+    slong fw = K->nf / FLINT_BITS + 1, nfaces = K->C->nfaces, w, j, f;
+    ulong * tab = malloc(sizeof(ulong) * (fw * (nfaces + 1) + 1));
+    ulong * tight;
+
+    if (tab == NULL)
+        return 0;
+    face_facets(tab, fw, K);
+    tight = tab + fw * nfaces;
+    for (w = 0; w < X->words; w++)
+    {
+        ulong x;
+
+        for (x = cand[w]; x != 0; x &= x - 1)
+        {
+            slong i = w * FLINT_BITS + _wc_plan_ctz(x);
+            const signed char * s = A->sign + i * A->nplanes;
+
+            memset(tight, 0, sizeof(ulong) * fw);
+            for (j = 0; j < K->nf; j++)
+                if (s[K->plane[j]] == 0)
+                    tight[j / FLINT_BITS] |= UWORD(1) << (j % FLINT_BITS);
+            for (f = 0; f < nfaces; f++)
+            {
+                for (j = 0; j < fw && tab[f * fw + j] == tight[j]; j++)
+                    ;
+                if (j == fw)
+                    break;
+            }
+            if (f < nfaces && K->C->faces[f].included)
+                out[w] |= UWORD(1) << (i % FLINT_BITS);
+        }
+    }
+    free(tab);
+    return 1;
+}
+
+void
+_wc_cone_key_cells(ulong * out, const wc_cone_key * K, wc_cell_bits * X,
+                   const wc_cells_t A)
+{
+    slong j, w, words = X->words;
+
+    memset(out, 0, sizeof(ulong) * words);
+    if (K->C->empty || X->count == 0)
+        return;
+    for (w = 0; w < words; w++)
+        X->cand[w] = ~UWORD(0);
+    if (X->count % FLINT_BITS != 0)
+        X->cand[words - 1] = (UWORD(1) << (X->count % FLINT_BITS)) - 1;
+    if (!K->usable)
+    {
+        by_lattice(out, X->cand, K, X, A);
+        return;
+    }
+    memcpy(X->strict, X->cand, sizeof(ulong) * words);
+    for (j = 0; j < K->ne; j++)
+        and_facet(X, K->plane[K->nf + j], 0, 1);
+    for (j = 0; j < K->nf; j++)
+        and_facet(X, K->plane[j], K->orient[j], 0);
+    /* the boundary: candidates not strictly inside every facet */
+    for (w = 0; w < words; w++)
+    {
+        if (K->top)
+            out[w] = X->strict[w];
+        X->cand[w] &= ~X->strict[w];
+    }
+    if (!by_faces(out, X->cand, K, X, A))
+        by_lattice(out, X->cand, K, X, A);
+}
