@@ -22,8 +22,19 @@ EXTRA_DIST += bench/bench-batch.sh
 BENCH = bench/bench-cone$(EXEEXT) bench/bench-modes$(EXEEXT) \
 	bench/bench-double$(EXEEXT) bench/bench-stability$(EXEEXT) \
 	bench/bench-plan$(EXEEXT) bench/bench-cert$(EXEEXT)
-bench: $(BENCH) src/wrenchcone$(EXEEXT)
+# Against the Parma Polyhedra Library: built only when configure found it.
+if WC_HAVE_PPL
+EXTRA_PROGRAMS += bench/bench-ppl
+bench_bench_ppl_SOURCES = bench/bench-ppl.c bench/benchutil.c
+bench_bench_ppl_LDADD = lib/libwc.la $(PPL_LIBS)
+BENCH_PPL = bench/bench-ppl$(EXEEXT)
+else
+BENCH_PPL =
+endif
+bench: $(BENCH) $(BENCH_PPL) src/wrenchcone$(EXEEXT)
 	for b in $(BENCH); do ./$$b || exit 1; done
+	@if test -n "$(BENCH_PPL)"; then ./$(BENCH_PPL) || exit 1; else \
+	  echo "bench-ppl: skipped: configure did not find the Parma Polyhedra Library (ppl_c.h, -lppl_c; Debian libppl-dev)"; fi
 	$(SHELL) $(srcdir)/bench/bench-batch.sh src/wrenchcone$(EXEEXT) $(srcdir)/data
 .PHONY: bench
 CLEANFILES += $(EXTRA_PROGRAMS)
