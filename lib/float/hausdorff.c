@@ -215,11 +215,13 @@ max_angle_to_plane(double * w, const wc_cone_t K, const fmpq * n)
 }
 
 /* minimax_polar costs k^4 with k rays of B: above these many rays it
-   tries fewer candidates (triples, then pairs), and its answer is then
-   only a lower bound -- still at least pi/2, so it still exceeds every
-   tolerance wc_compare accepts.  */
+   tries fewer candidates (triples, then pairs, then the single p_i: k^2
+   per face of K), and above the last only K's generators (k each), and
+   its answer is then only a lower bound -- still at least pi/2, so it
+   still exceeds every tolerance wc_compare accepts.  */
 #define WC_MINIMAX_TRIPLES 48
 #define WC_MINIMAX_PAIRS 400
+#define WC_MINIMAX_SINGLES 1000
 
 typedef struct
 {
@@ -314,7 +316,7 @@ minimax_polar(double * w, const wc_cone_t K, const wc_cone_t B)
         minimax_try(&M, g);
     }
     fmpq_mat_clear(G);
-    for (f = 0; f < K->nfaces; f++)
+    for (f = 0; f < K->nfaces && M.k <= WC_MINIMAX_SINGLES; f++)
     {
         slong r = _wc_face_span(dir, K, K->faces + f);
         double b[3], x[3], d[3];
