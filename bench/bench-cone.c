@@ -29,58 +29,6 @@
 #include "exact/hull3.h"
 #include "ref-hull3.h"
 
-/* Rational points on the unit circle from Pythagorean parametrisation,
-   t = k / (k + 3): ((1 - t^2) / (1 + t^2), 2t / (1 + t^2)); the inward
-   normal is minus the point.  Rotated by k quarter turns so that the
-   fixels surround the part.  */
-static void
-make_problem(wc_problem_t P, slong n)
-{
-    slong k;
-
-    fmpq_set_si(P->mu_s, 1, 5);
-    fmpq_set_si(P->mu_k, 1, 10);
-    fmpq_set_si(P->com + 0, 1, 7);
-    fmpq_set_si(P->com + 1, -1, 9);
-    fmpq_set_si(P->mass, 3, 2);
-    fmpq_set_si(P->inertia, 2, 3);
-    for (k = 0; k < n; k++)
-    {
-        wc_fixel_struct * f = wc_problem_add_fixel(P);
-        fmpq_t t, den, x, y;
-        slong q = k % 4;
-
-        fmpq_init(t);
-        fmpq_init(den);
-        fmpq_init(x);
-        fmpq_init(y);
-        fmpq_set_si(t, k + 1, k + 4);
-        fmpq_mul(den, t, t);
-        fmpq_add_si(den, den, 1);
-        fmpq_mul(x, t, t);
-        fmpq_sub_si(x, x, 1);
-        fmpq_neg(x, x);
-        fmpq_div(x, x, den);
-        fmpq_mul_si(y, t, 2);
-        fmpq_div(y, y, den);
-        /* rotate by q quarter turns */
-        while (q-- > 0)
-        {
-            fmpq_swap(x, y);
-            fmpq_neg(x, x);
-        }
-        fmpq_set(f->point + 0, x);
-        fmpq_set(f->point + 1, y);
-        fmpq_neg(f->normal + 0, x);
-        fmpq_neg(f->normal + 1, y);
-        f->state = WC_TOUCHING;
-        fmpq_clear(t);
-        fmpq_clear(den);
-        fmpq_clear(x);
-        fmpq_clear(y);
-    }
-}
-
 /* Mean seconds per cone.  */
 static double
 time_cone(const wc_problem_t P, const char * mode, wc_method method,
@@ -241,7 +189,7 @@ main(int argc, char ** argv)
             memset(mode, m == 0 ? 'l' : 'n', n);
             mode[n] = '\0';
             wc_problem_init(P);
-            make_problem(P, n);
+            wcbench_cone_problem(P, n);
             td = time_cone(P, mode, WC_METHOD_DIRECT, budget, &ed);
             tp = time_cone(P, mode, WC_METHOD_PAPER, budget, &ep);
             if (ed != ep)
@@ -269,7 +217,7 @@ main(int argc, char ** argv)
         memset(mode, 'n', n);
         mode[n] = '\0';
         wc_problem_init(P);
-        make_problem(P, n);
+        wcbench_cone_problem(P, n);
         td = time_cone(P, mode, WC_METHOD_DIRECT, budget, &ed);
         printf("%4ld  %-6s  %12.4f  %12s  %9s  %s\n", (long) n, "n..n",
                1e3 * td, "-", "-", ed ? "empty" : "nonempty");

@@ -6,6 +6,7 @@
 
 #include <config.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
@@ -55,4 +56,78 @@ wcbench_circle_fixel(wc_problem_t P, slong a, slong b, int sy,
     fmpq_clear(s);
     fmpq_clear(s2);
     fmpq_clear(den);
+}
+
+/* Rational points on the unit circle from Pythagorean parametrisation,
+   t = (k + 1) / (k + 4): ((1 - t^2) / (1 + t^2), 2t / (1 + t^2)); the
+   inward normal is minus the point.  Rotated by k quarter turns so that
+   the fixels surround the part.  */
+void
+wcbench_cone_problem(wc_problem_t P, slong n)
+{
+    slong k;
+
+    fmpq_set_si(P->mu_s, 1, 5);
+    fmpq_set_si(P->mu_k, 1, 10);
+    fmpq_set_si(P->com + 0, 1, 7);
+    fmpq_set_si(P->com + 1, -1, 9);
+    fmpq_set_si(P->mass, 3, 2);
+    fmpq_set_si(P->inertia, 2, 3);
+    for (k = 0; k < n; k++)
+    {
+        wc_fixel_struct * f = wc_problem_add_fixel(P);
+        fmpq_t t, den, x, y;
+        slong q = k % 4;
+
+        fmpq_init(t);
+        fmpq_init(den);
+        fmpq_init(x);
+        fmpq_init(y);
+        fmpq_set_si(t, k + 1, k + 4);
+        fmpq_mul(den, t, t);
+        fmpq_add_si(den, den, 1);
+        fmpq_mul(x, t, t);
+        fmpq_sub_si(x, x, 1);
+        fmpq_neg(x, x);
+        fmpq_div(x, x, den);
+        fmpq_mul_si(y, t, 2);
+        fmpq_div(y, y, den);
+        /* rotate by q quarter turns */
+        while (q-- > 0)
+        {
+            fmpq_swap(x, y);
+            fmpq_neg(x, x);
+        }
+        fmpq_set(f->point + 0, x);
+        fmpq_set(f->point + 1, y);
+        fmpq_neg(f->normal + 0, x);
+        fmpq_neg(f->normal + 1, y);
+        f->state = WC_TOUCHING;
+        fmpq_clear(t);
+        fmpq_clear(den);
+        fmpq_clear(x);
+        fmpq_clear(y);
+    }
+}
+
+double
+wcbench_slope(const double * x, const double * y, slong len)
+{
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    slong i;
+
+    if (len < 2)
+        return NAN;
+    for (i = 0; i < len; i++)
+    {
+        double lx = log(x[i]), ly = log(y[i]);
+
+        sx += lx;
+        sy += ly;
+        sxx += lx * lx;
+        sxy += lx * ly;
+    }
+    if (len * sxx - sx * sx == 0)
+        return NAN;
+    return (len * sxy - sx * sy) / (len * sxx - sx * sx);
 }

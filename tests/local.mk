@@ -31,6 +31,7 @@ C_TESTS = \
 	tests/t-random \
 	tests/t-double \
 	tests/t-compare \
+	tests/t-compare-fast \
 	tests/t-cells \
 	tests/t-push \
 	tests/t-stability \
@@ -45,6 +46,8 @@ C_TESTS = \
 check_PROGRAMS += $(C_TESTS) tests/corpus-check
 LDADD = $(TEST_LIBS)
 tests_corpus_check_LDADD = lib/libwc.la
+# the former directed distance, the reference of t-compare-fast
+tests_t_compare_fast_SOURCES = tests/t-compare-fast.c tests/ref-hausdorff.c
 
 SH_TESTS = \
 	tests/cli-cone.sh \

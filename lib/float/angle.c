@@ -272,6 +272,68 @@ in_closure(const wc_cone_t C, const fmpq * p)
     return in;
 }
 
+/* p := the projection of v onto span F, F a face of cl C.  Returns the
+   dimension of span F when p lies in cl C, else -1.  span F meets cl C in
+   F alone (F is cl C cut by a supporting plane that contains span F), so
+   p is in cl C iff p is in F, which a face of at most two rays and no
+   lines tells in O(1): for one ray r (C's rays are orthogonal to its
+   lines) iff p.r >= 0; for two, iff p lies between them.  Only larger
+   faces are tested against every facet, so that the nearest point of a
+   cone with k rays costs O(k), not O(k^2) (tests/t-compare-fast.c checks
+   this against the facet test on every face).  */
+static slong
+face_project(fmpq * p, fmpq * dir, const fmpq * v, const wc_cone_t C,
+             const wc_face_struct * F)
+{
+    slong nl = fmpz_mat_nrows(C->lines), r;
+    fmpq * a, * b;
+    int in;
+
+    if (nl > 0 || F->nrays == 0 || F->nrays > 2)
+    {
+        r = _wc_face_span(dir, C, F);
+        _wc_span_project(p, v, r, dir);
+        return in_closure(C, p) ? r : -1;
+    }
+    a = _fmpq_vec_init(3);
+    b = _fmpq_vec_init(3);
+    _fmpq_vec_set_fmpz_vec(a, WC_ROW(C->rays, F->rays[0]), 3);
+    if (F->nrays == 1)
+    {
+        /* the projection onto R r is independent of r's scale */
+        r = 1;
+        _wc_span_project(p, v, r, a);
+        _wc_qv3_dot(b + 0, p, a);
+        in = fmpq_sgn(b + 0) >= 0;
+    }
+    else
+    {
+        fmpq * c = _fmpq_vec_init(3);
+        fmpq_t s;
+
+        fmpq_init(s);
+        _fmpq_vec_set_fmpz_vec(b, WC_ROW(C->rays, F->rays[1]), 3);
+        r = 2;
+        _wc_qvec3_cross(dir, a, b);         /* a normal of span F */
+        _wc_span_project(p, v, r, dir);
+        /* p in pos(a, b) iff (a x p) and (p x b) point along a x b */
+        _wc_qvec3_cross(c, a, p);
+        _wc_qv3_dot(s, c, dir);
+        in = fmpq_sgn(s) >= 0;
+        if (in)
+        {
+            _wc_qvec3_cross(c, p, b);
+            _wc_qv3_dot(s, c, dir);
+            in = fmpq_sgn(s) >= 0;
+        }
+        fmpq_clear(s);
+        _fmpq_vec_clear(c, 3);
+    }
+    _fmpq_vec_clear(a, 3);
+    _fmpq_vec_clear(b, 3);
+    return in ? r : -1;
+}
+
 /* best = |P v|^2, P the nearest-point map onto cl C (C nonempty); q = P v
    when q is not NULL.  See the comment at the top.  */
 void
@@ -287,9 +349,8 @@ _wc_cone_project(fmpq_t best, fmpq * q, const fmpq * v, const wc_cone_t C)
         _wc_qv3_zero(q);
     for (f = 0; f < C->nfaces; f++)
     {
-        r = _wc_face_span(dir, C, C->faces + f);
-        _wc_span_project(p, v, r, dir);
-        if (!in_closure(C, p))
+        r = face_project(p, dir, v, C, C->faces + f);
+        if (r < 0)
             continue;
         _wc_qv3_dot(n2, p, p);
         if (fmpq_cmp(n2, best) > 0)

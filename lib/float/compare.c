@@ -13,27 +13,11 @@
 #include <string.h>
 
 #include <flint/fmpq_vec.h>
+#include <flint/fmpz_vec.h>
 
 #include "float/compare.h"
 #include "float/angle.h"
 #include "exact/vec3.h"
-
-/* 1 when a = s b for some s > 0 (both nonzero).  */
-static int
-same_ray(const fmpq * a, const fmpq * b)
-{
-    fmpq * c = _fmpq_vec_init(3);
-    fmpq_t d;
-    int r;
-
-    fmpq_init(d);
-    _wc_qvec3_cross(c, a, b);
-    _wc_qv3_dot(d, a, b);
-    r = _wc_qv3_is_zero(c) && fmpq_sgn(d) > 0;
-    fmpq_clear(d);
-    _fmpq_vec_clear(c, 3);
-    return r;
-}
 
 static void
 cmp_rep_init(wc_cmp_rep_struct * C)
@@ -155,47 +139,117 @@ angles_to(wc_cmp_vec * U, const fmpz_mat_t A, const wc_cone_t C)
     _fmpq_vec_clear(v, 3);
 }
 
+/* A row of a matrix and its index, to sort and search rows.  */
+typedef struct
+{
+    const fmpz * v;
+    slong i;
+}
+zrow;
+
+/* Lexicographic order of integer 3-vectors (qsort, bsearch).  */
+static int
+zv3_cmp(const void * a, const void * b)
+{
+    const fmpz * x = ((const zrow *) a)->v, * y = ((const zrow *) b)->v;
+    slong j;
+    int c;
+
+    for (j = 0; j < 3; j++)
+        if ((c = fmpz_cmp(x + j, y + j)) != 0)
+            return c;
+    return 0;
+}
+
+/* z := the primitive integer vector on the ray of p (nonzero).  Two
+   vectors are on the same ray iff their primitive vectors are equal, and
+   the canonical vectors of a cone are primitive: so a vector's ray is
+   found among them by a binary search.  */
+static void
+primitive(fmpz * z, const fmpq * p)
+{
+    fmpz_t l, g;
+    slong j;
+
+    fmpz_init(l);
+    fmpz_init(g);
+    fmpz_one(l);
+    for (j = 0; j < 3; j++)
+        fmpz_lcm(l, l, fmpq_denref(p + j));
+    for (j = 0; j < 3; j++)
+    {
+        fmpz_divexact(z + j, l, fmpq_denref(p + j));
+        fmpz_mul(z + j, z + j, fmpq_numref(p + j));
+        fmpz_gcd(g, g, z + j);
+    }
+    for (j = 0; j < 3; j++)
+        fmpz_divexact(z + j, z + j, g);
+    fmpz_clear(l);
+    fmpz_clear(g);
+}
+
 /* The file line of an input row (of P) on each canonical vector of X:
    the rows are first stripped of their component in span S (the cone's
    lines for rays, its equalities for facets), as the canonical form
    does.  The lines of the input rows on no canonical vector (redundant
-   rows) go to C->redundant.  */
-static void
+   rows) go to C->redundant.  O(k log k) for k rows: each row's ray is
+   looked up among X's sorted rows (tests/t-compare-fast.c checks this
+   against the pairwise search it replaced).  */
+static int
 source_lines(wc_cmp_rep_struct * C, wc_cmp_vec * U, const fmpz_mat_t X,
-             const fmpq_mat_t P, const long * lines, const fmpz_mat_t S)
+             const fmpq_mat_t P, const long * lines, const fmpz_mat_t S,
+             wc_error_t err)
 {
     fmpq * dir = _fmpq_vec_init(3), * p = _fmpq_vec_init(3);
-    fmpq * x = _fmpq_vec_init(3), * q = _fmpq_vec_init(3);
-    slong r = _wc_rows_span(dir, S), i, j, c;
+    fmpq * q = _fmpq_vec_init(3);
+    fmpz * z = _fmpz_vec_init(3);
+    slong r = _wc_rows_span(dir, S), nx = fmpz_mat_nrows(X), i, j, c;
+    zrow * sorted = malloc(sizeof(zrow) * (nx + 1));
 
     C->redundant = flint_malloc(sizeof(long) * (fmpq_mat_nrows(P) + 1));
+    if (sorted == NULL)
+    {
+        _fmpq_vec_clear(dir, 3);
+        _fmpq_vec_clear(p, 3);
+        _fmpq_vec_clear(q, 3);
+        _fmpz_vec_clear(z, 3);
+        return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
+    }
+    for (i = 0; i < nx; i++)
+    {
+        sorted[i].v = WC_ROW(X, i);
+        sorted[i].i = i;
+    }
+    qsort(sorted, nx, sizeof(zrow), zv3_cmp);
     for (j = 0; j < fmpq_mat_nrows(P); j++)
     {
+        zrow key, * hit = NULL;
         int on = 0;
 
         _wc_span_project(q, WC_ROW(P, j), r, dir);
         for (c = 0; c < 3; c++)
             fmpq_sub(p + c, fmpq_mat_entry(P, j, c), q + c);
-        for (i = 0; !_wc_qv3_is_zero(p) && i < fmpz_mat_nrows(X); i++)
+        if (!_wc_qv3_is_zero(p))
         {
-            _fmpq_vec_set_fmpz_vec(x, WC_ROW(X, i), 3);
-            if (!same_ray(x, p))
-                continue;
-            /* a second row on the same ray is redundant too */
-            if (U[i].line == 0)
-            {
-                U[i].line = lines[j];
-                on = 1;
-            }
-            break;
+            primitive(z, p);
+            key.v = z;
+            hit = bsearch(&key, sorted, nx, sizeof(zrow), zv3_cmp);
+        }
+        /* a second row on the same ray is redundant too */
+        if (hit != NULL && U[hit->i].line == 0)
+        {
+            U[hit->i].line = lines[j];
+            on = 1;
         }
         if (!on)
             C->redundant[C->nredundant++] = lines[j];
     }
+    free(sorted);
     _fmpq_vec_clear(dir, 3);
     _fmpq_vec_clear(p, 3);
-    _fmpq_vec_clear(x, 3);
     _fmpq_vec_clear(q, 3);
+    _fmpz_vec_clear(z, 3);
+    return WC_OK;
 }
 
 static int
@@ -247,9 +301,13 @@ compare_rep(wc_cmp_rep_struct * C, const wc_cone_t W, const wc_rep_struct * P,
     C->nexact_facets = fmpz_mat_nrows(W->ineqs);
     match(&C->facets, &C->exact_facets, F->ineqs, W->ineqs, tol);
     if (P->kind == WC_REP_GENERATORS)
-        source_lines(C, C->rays, F->rays, P->rows, P->row_line, F->lines);
+        status = source_lines(C, C->rays, F->rays, P->rows, P->row_line,
+                              F->lines, err);
     else
-        source_lines(C, C->facets, F->ineqs, P->rows, P->row_line, F->eqs);
+        status = source_lines(C, C->facets, F->ineqs, P->rows, P->row_line,
+                              F->eqs, err);
+    if (status != WC_OK)
+        return status;
 
     status = wc_cone_directed_angle(&C->exact_to_float, NULL, W, F, err);
     if (status == WC_OK)

@@ -155,8 +155,8 @@ void wc_foreign_clear(wc_foreign_t F);
    "lineality_dim" and "faces", when present, must be well formed
    (dimensions 0 to 3, face ray indices into "rays").
 
-   Limits (hostile files must not take forever): at most 1000 rows in a
-   representation, numbers of at most 1000 characters with exponents of
+   Limits (hostile files must not take forever): at most 100000 rows in
+   a representation, numbers of at most 1000 characters with exponents of
    at most 1000 in absolute value.
 
    Returns WC_OK; WC_EINPUT with err located FILE:LINE:COL; WC_EINTERNAL

@@ -35,7 +35,10 @@
 #include <math.h>
 #include <string.h>
 
+#include <stdlib.h>
+
 #include <flint/fmpq_vec.h>
+#include <flint/fmpz_vec.h>
 
 #include "float/compare.h"
 #include "float/angle.h"
@@ -212,11 +215,13 @@ max_angle_to_plane(double * w, const wc_cone_t K, const fmpq * n)
 }
 
 /* minimax_polar costs k^4 with k rays of B: above these many rays it
-   tries fewer candidates (triples, then pairs), and its answer is then
-   only a lower bound -- still at least pi/2, so it still exceeds every
-   tolerance wc_compare accepts.  */
+   tries fewer candidates (triples, then pairs, then the single p_i: k^2
+   per face of K), and above the last only K's generators (k each), and
+   its answer is then only a lower bound -- still at least pi/2, so it
+   still exceeds every tolerance wc_compare accepts.  */
 #define WC_MINIMAX_TRIPLES 48
 #define WC_MINIMAX_PAIRS 400
+#define WC_MINIMAX_SINGLES 1000
 
 typedef struct
 {
@@ -311,7 +316,7 @@ minimax_polar(double * w, const wc_cone_t K, const wc_cone_t B)
         minimax_try(&M, g);
     }
     fmpq_mat_clear(G);
-    for (f = 0; f < K->nfaces; f++)
+    for (f = 0; f < K->nfaces && M.k <= WC_MINIMAX_SINGLES; f++)
     {
         slong r = _wc_face_span(dir, K, K->faces + f);
         double b[3], x[3], d[3];
@@ -468,39 +473,204 @@ separated(const wc_cone_t A, const fmpq_mat_t R, const fmpq_mat_t L)
     return sep;
 }
 
-/* K = cl A cap (G + N_G), G the face F of B.  */
-static int
-cell(wc_cone_t K, const wc_cone_t A, const wc_cone_t B,
-     const wc_face_struct * F, wc_error_t err)
+/* Which facets of B contain each face, found without testing every facet
+   against every face (O(k^2) for k rays): for a pointed 3-dimensional B,
+   each 2-dimensional face (two rays a, b) lies on the facet whose normal
+   is the primitive vector on +-(a x b), found by a binary search among
+   B's sorted facet normals, and a ray lies on the facets of the
+   2-dimensional faces that contain it.  Other cones (few facets) keep
+   the direct test (tight).  tests/t-compare-fast.c checks both ways.  */
+typedef struct
 {
-    slong m = fmpz_mat_nrows(B->ineqs), nr = 0, i;
+    int on;             /* the map is built */
+    slong * facet;      /* per face of B: its facet's row, or -1 */
+    slong * start;      /* per ray i: its facets' rows are */
+    slong * rows;       /* rows[start[i] .. start[i + 1]) */
+}
+tightmap;
+
+typedef struct
+{
+    const fmpz * v;
+    slong i;
+}
+zrow;
+
+static int
+zrow_cmp(const void * a, const void * b)
+{
+    const fmpz * x = ((const zrow *) a)->v, * y = ((const zrow *) b)->v;
+    slong j;
+    int c;
+
+    for (j = 0; j < 3; j++)
+        if ((c = fmpz_cmp(x + j, y + j)) != 0)
+            return c;
+    return 0;
+}
+
+static void
+tightmap_clear(tightmap * T)
+{
+    flint_free(T->facet);
+    flint_free(T->start);
+    flint_free(T->rows);
+    T->on = 0;
+}
+
+/* The facet row of the 2-dimensional face F of B (pointed, dim 3), or -1
+   when the search fails (it cannot, for a canonical cone).  */
+static slong
+face_facet(const wc_cone_t B, const wc_face_struct * F, const zrow * sorted,
+           fmpz * h, fmpz_t t)
+{
+    const fmpz * a = WC_ROW(B->rays, F->rays[0]);
+    const fmpz * b = WC_ROW(B->rays, F->rays[1]);
+    slong j, c;
+    zrow key, * hit;
+
+    _wc_zvec3_cross(h, a, b);
+    _fmpz_vec_content(t, h, 3);
+    if (fmpz_is_zero(t))
+        return -1;
+    _fmpz_vec_scalar_divexact_fmpz(h, h, 3, t);
+    /* the sign: h.x <= 0 on B, and < 0 at a ray off F */
+    for (c = 0; c < fmpz_mat_nrows(B->rays); c++)
+        if (c != F->rays[0] && c != F->rays[1])
+        {
+            fmpz_zero(t);
+            for (j = 0; j < 3; j++)
+                fmpz_addmul(t, h + j, WC_ROW(B->rays, c) + j);
+            if (fmpz_sgn(t) != 0)
+                break;
+        }
+    if (fmpz_sgn(t) > 0)
+        _fmpz_vec_neg(h, h, 3);
+    key.v = h;
+    hit = bsearch(&key, sorted, fmpz_mat_nrows(B->ineqs), sizeof(zrow),
+                  zrow_cmp);
+    return hit == NULL ? -1 : hit->i;
+}
+
+/* Build T for B when B is pointed and 3-dimensional; else T->on = 0.
+   Returns 0, or -1 when out of memory.  */
+static int
+tightmap_init(tightmap * T, const wc_cone_t B)
+{
+    slong m = fmpz_mat_nrows(B->ineqs), k = fmpz_mat_nrows(B->rays), f, i;
+    zrow * sorted;
+    fmpz * h;
+    fmpz_t t;
+
+    T->on = 0;
+    T->facet = T->start = T->rows = NULL;
+    if (B->dim != 3 || B->lineality_dim != 0 || k < 3)
+        return 0;
+    sorted = flint_malloc(sizeof(zrow) * (m + 1));
+    T->facet = flint_malloc(sizeof(slong) * (B->nfaces + 1));
+    T->start = flint_calloc(k + 2, sizeof(slong));
+    T->rows = flint_malloc(sizeof(slong) * (2 * B->nfaces + 1));
+    h = _fmpz_vec_init(3);
+    fmpz_init(t);
+    for (i = 0; i < m; i++)
+    {
+        sorted[i].v = WC_ROW(B->ineqs, i);
+        sorted[i].i = i;
+    }
+    qsort(sorted, m, sizeof(zrow), zrow_cmp);
+    T->on = 1;
+    for (f = 0; f < B->nfaces; f++)
+    {
+        const wc_face_struct * F = B->faces + f;
+
+        T->facet[f] = -1;
+        if (F->dim != 2)
+            continue;
+        if (F->nrays != 2 || (T->facet[f] = face_facet(B, F, sorted, h, t)) < 0)
+            T->on = 0;  /* not as expected: keep the direct test */
+        else
+        {
+            T->start[F->rays[0] + 2]++;
+            T->start[F->rays[1] + 2]++;
+        }
+    }
+    /* counting sort of (ray, facet) pairs into rows[] */
+    for (i = 0; i < k; i++)
+        T->start[i + 2] += T->start[i + 1];
+    for (f = 0; T->on && f < B->nfaces; f++)
+        if (B->faces[f].dim == 2)
+            for (i = 0; i < 2; i++)
+                T->rows[T->start[B->faces[f].rays[i] + 1]++] = T->facet[f];
+    flint_free(sorted);
+    _fmpz_vec_clear(h, 3);
+    fmpz_clear(t);
+    if (!T->on)
+        tightmap_clear(T);
+    return 0;
+}
+
+static int
+slong_cmp(const void * a, const void * b)
+{
+    slong x = *(const slong *) a, y = *(const slong *) b;
+
+    return (x > y) - (x < y);
+}
+
+/* idx[0..) := the rows of B's facets that contain face f, ascending;
+   returns how many.  */
+static slong
+tight_rows(slong * idx, const tightmap * T, const wc_cone_t B, slong f)
+{
+    const wc_face_struct * F = B->faces + f;
+    slong m = fmpz_mat_nrows(B->ineqs), n = 0, i;
+
+    if (!T->on || F->nrays == 0)
+    {
+        for (i = 0; i < m; i++)
+            if (F->nrays == 0 || tight(WC_ROW(B->ineqs, i), B, F))
+                idx[n++] = i;
+        return n;
+    }
+    if (F->dim == 2)
+    {
+        idx[0] = T->facet[f];
+        return 1;
+    }
+    /* a ray: its facets (F->dim is 1; B itself is never asked) */
+    for (i = T->start[F->rays[0]]; i < T->start[F->rays[0] + 1]; i++)
+        idx[n++] = T->rows[i];
+    qsort(idx, n, sizeof(slong), slong_cmp);
+    return n;
+}
+
+/* K = cl A cap (G + N_G), G the face f of B; *none := 1 (K untouched)
+   when a facet of A separates the cell, so that K = {0}.  */
+static int
+cell(wc_cone_t K, int * none, const wc_cone_t A, const wc_cone_t B,
+     slong f, const tightmap * T, wc_error_t err)
+{
+    const wc_face_struct * F = B->faces + f;
+    slong m = fmpz_mat_nrows(B->ineqs), nr = 0, i, nt;
+    slong * idx = flint_malloc(sizeof(slong) * (m + 1));
     fmpq_mat_t R, L, E, H;
     wc_cone_t C;
-    int status = WC_OK, sep;
+    int status = WC_OK;
 
-    fmpq_mat_init(R, F->nrays + m, 3);
+    nt = tight_rows(idx, T, B, f);
+    fmpq_mat_init(R, F->nrays + nt, 3);
     for (i = 0; i < F->nrays; i++)
         _fmpq_vec_set_fmpz_vec(WC_ROW(R, nr++), WC_ROW(B->rays, F->rays[i]),
                                3);
-    for (i = 0; i < m; i++)
-        if (tight(WC_ROW(B->ineqs, i), B, F))
-            _fmpq_vec_set_fmpz_vec(WC_ROW(R, nr++), WC_ROW(B->ineqs, i), 3);
-    /* fmpq_mat has no shrink: zero rows generate nothing */
+    for (i = 0; i < nt; i++)
+        _fmpq_vec_set_fmpz_vec(WC_ROW(R, nr++), WC_ROW(B->ineqs, idx[i]), 3);
+    flint_free(idx);
     stack_rows(L, B->lines, B->eqs);
     wc_cone_init(C, 3);
-    sep = separated(A, R, L);
-    if (sep)
-    {
-        /* K = {0}: the cone of no generator */
-        fmpq_mat_t Z;
-
-        fmpq_mat_init(Z, 0, 3);
-        status = wc_cone_set_generators(K, Z, Z, err);
-        fmpq_mat_clear(Z);
-    }
-    else
+    *none = separated(A, R, L);
+    if (!*none)
         status = wc_cone_set_generators(C, R, L, err);
-    if (status == WC_OK && !sep)
+    if (status == WC_OK && !*none)
     {
         stack_rows(E, A->eqs, C->eqs);
         stack_rows(H, A->ineqs, C->ineqs);
@@ -521,6 +691,7 @@ wc_cone_directed_angle(double * dist, double * witness, const wc_cone_t A,
     double best = -1, w[3] = { 0, 0, 0 }, x[3];
     fmpq * dir = _fmpq_vec_init(3);
     wc_cone_t K;
+    tightmap T = { 0, NULL, NULL, NULL };
     slong f;
     int status = WC_OK;
 
@@ -546,19 +717,21 @@ wc_cone_directed_angle(double * dist, double * witness, const wc_cone_t A,
         best = INFINITY;
         goto cleanup;
     }
+    tightmap_init(&T, B);
     for (f = 0; f < B->nfaces; f++)
     {
         const wc_face_struct * F = B->faces + f;
         double a;
         slong r;
+        int none;
 
         r = _wc_face_span(dir, B, F);
         if (r >= 3)
             continue;   /* B itself, full-dimensional: angle 0 there */
-        status = cell(K, A, B, F, err);
+        status = cell(K, &none, A, B, f, &T, err);
         if (status != WC_OK)
             goto cleanup;
-        if (K->empty || K->dim == 0)
+        if (none || K->empty || K->dim == 0)
             continue;
         if (r == 2)
             a = max_angle_to_plane(x, K, dir);
@@ -590,6 +763,7 @@ cleanup:
         if (witness != NULL)
             memcpy(witness, w, sizeof w);
     }
+    tightmap_clear(&T);
     wc_cone_clear(K);
     _fmpq_vec_clear(dir, 3);
     return status;
