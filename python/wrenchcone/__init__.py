@@ -44,7 +44,7 @@ from fractions import Fraction
 __all__ = [
     "Problem", "Error", "InputError", "UsageError", "InternalError",
     "cone", "modes", "feasible", "classify", "stability", "plan",
-    "compare", "request", "request_json", "library_path",
+    "compare", "request", "request_json", "library_path", "exact",
 ]
 
 # The installed library's directory; make install replaces this line
