@@ -10,6 +10,7 @@
 
 import glob
 import os
+import pickle
 import re
 
 import pytest
@@ -117,3 +118,18 @@ def test_errors_are_exceptions():
     assert issubclass(wc.Error, Exception)
     e = wc.InputError("bad", "f.wc", 3, 7)
     assert str(e) == "f.wc:3:7: bad" and e.status == 1
+    c = pickle.loads(pickle.dumps(e))
+    assert type(c) is wc.InputError
+    assert (c.message, c.file, c.line, c.column, c.status, str(c)) \
+        == ("bad", "f.wc", 3, 7, 1, str(e))
+    assert str(wc.Error("m", "f.wc")) == "f.wc: m"
+    assert str(wc.Error("m")) == "m"
+
+
+def test_non_ascii_text():
+    with open("data/section4.wc") as f:
+        text = "# caf\u00e9 \u2713\n" + f.read()
+    assert wc.cone(wc.Problem.from_text(text), "na")["rays"][0] == [-1, -5, -1]
+    with pytest.raises(wc.InputError) as info:
+        wc.modes(wc.Problem.from_text("# caf\u00e9\nmass -1\n"))
+    assert (info.value.line, info.value.column) == (2, 6)

@@ -7,8 +7,8 @@
 #
 # float_member below stands for "your" floating-point code: it decides
 # whether a wrench g is in the wrench cone of a mode by writing g in the
-# basis of the cone's three generators (numpy when importable, else
-# Cramer's rule in plain floats) and accepting non-negative coefficients
+# basis of the cone's three generators (Cramer's rule in plain floats,
+# and numpy's solver too when numpy is importable) and accepting non-negative coefficients
 # up to a tolerance.  The exact reference is the cone the library
 # computes: g is in the closure when h . g <= 0 for every facet h, and in
 # the cone itself when the smallest face of the closure holding g is one
@@ -34,10 +34,13 @@ except ImportError:  # plain floats then
     numpy = None
 
 
-def float_member(rays, g, eps=1e-12):
+IMPLS = ["plain"] + (["numpy"] if numpy is not None else [])
+
+
+def float_member(rays, g, eps=1e-12, impl="plain"):
     """The floating-point code under test: g in cone(rays), rays three
     independent 3-vectors of floats."""
-    if numpy is not None:
+    if impl == "numpy":
         lam = numpy.linalg.solve(numpy.array(rays, dtype=float).T,
                                  numpy.array(g, dtype=float))
         return bool((lam >= -eps).all())
@@ -87,10 +90,11 @@ def random_wrench(rng, rays):
             for _ in range(3)]
 
 
+@pytest.mark.parametrize("impl", IMPLS)
 @pytest.mark.parametrize("path,mode", [
     ("data/section4.wc", "na"), ("data/section4.wc", "la"),
     ("data/section4.wc", "ns"), ("data/disk-two-fixels.wc", "ns")])
-def test_float_membership_against_exact(path, mode):
+def test_float_membership_against_exact(path, mode, impl):
     W = wc.cone(wc.Problem.read(path), mode)
     if W["empty"] or W["dim"] != 3 or len(W["rays"]) != 3:
         pytest.skip("the float code handles simplicial cones only")
@@ -100,9 +104,9 @@ def test_float_membership_against_exact(path, mode):
     for k in range(400 * MULTIPLIER):
         g = random_wrench(rng, W["rays"])
         inside, on_boundary = exact_member(W, g)
-        got = float_member(rays, [float(x) for x in g])
-        where = "seed %d, %s %s, wrench %d %s" % (
-            SEED, path, mode, k, [str(x) for x in g])
+        got = float_member(rays, [float(x) for x in g], impl=impl)
+        where = "seed %d, %s %s (%s), wrench %d %s" % (
+            SEED, path, mode, impl, k, [str(x) for x in g])
         if on_boundary:
             boundary += 1
             # floats cannot tell strictness: the closure is all they see
@@ -113,7 +117,8 @@ def test_float_membership_against_exact(path, mode):
     assert inner > 0 and boundary > 0
 
 
-def test_float_code_misses_strictness():
+@pytest.mark.parametrize("impl", IMPLS)
+def test_float_code_misses_strictness(impl):
     # Section 4: W(na) excludes the apex and the friction edges r0, r1,
     # and the float code accepts them; the exact cone says so.
     W = wc.cone("data/section4.wc", "na")
@@ -123,6 +128,6 @@ def test_float_code_misses_strictness():
                       ([a + b for a, b in zip(W["rays"][0], W["rays"][2])],
                        True)):
         assert exact_member(W, [Fraction(x) for x in g])[0] is inside
-        assert float_member(rays, [float(x) for x in g]) is True
+        assert float_member(rays, [float(x) for x in g], impl=impl) is True
     # classify agrees with the cone: the apex is held by W(ns), not W(na)
     assert "na" not in wc.classify("data/section4.wc", [0, 0, 0])["modes"]

@@ -73,6 +73,11 @@ class Error(Exception):
             self.status = status
         super().__init__(self.located())
 
+    def __reduce__(self):
+        # whole through pickle (multiprocessing)
+        return (type(self), (self.message, self.file, self.line,
+                             self.column, self.status))
+
     def located(self):
         """The diagnostic as the command line prints it after
         "wrenchcone: "."""
