@@ -16,7 +16,11 @@
 #      compiles and links with `pkg-config --cflags --libs wrenchcone`
 #      alone (PKG_CONFIG_SYSROOT_DIR=TMP) and prints the same cone as
 #      `wrenchcone cone`; so it does against the static library with
-#      `pkg-config --static`.
+#      `pkg-config --static`;
+#   5. when configure found a Python 3, the Python module is installed in
+#      its pythondir naming the installed library's directory, and,
+#      imported from there (PYTHONPATH into the staged tree, the staged
+#      library by WRENCHCONE_LIB), computes the cone of step 1.
 # SKIP (77) without pkg-config, a C compiler, nm or perl.
 #
 # Copyright (C) 2026 the wrenchcone authors.
@@ -143,5 +147,30 @@ if [ -f "$a" ]; then
         2> "$tmp/cc" || { cat "$tmp/cc" >&2; fail "cc one-cone.c $sflags"; }
     "$tmp/one-cone-static" | cmp -s - "$tmp/got" \
         || fail "one-cone linked with libwrenchcone.a prints another cone"
+fi
+
+# 5. The Python module, installed when configure found a Python 3.
+py=$(sed -n 's/^PYTHON = //p' "$top_builddir/Makefile")
+if [ -n "$py" ] && [ "$py" != : ]; then
+    init=$(find_one '*/wrenchcone/__init__.py')
+    libdir=$(dirname "$so")
+    grep -qxF "_INSTALLED_LIBDIR = '${libdir#"$dest"}'" "$init" \
+        || fail "the installed module does not name the library's directory ${libdir#"$dest"}"
+    if [ -n "$WC_SAN" ]; then
+        LD_PRELOAD=$(${CC:-cc} -print-file-name=libasan.so)
+        ASAN_OPTIONS=detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}
+        export LD_PRELOAD ASAN_OPTIONS
+    fi
+    (cd "$tmp" && PYTHONPATH=$(dirname "$(dirname "$init")") WRENCHCONE_LIB=$so \
+        PYTHONDONTWRITEBYTECODE=1 "$py" -c '
+import sys, wrenchcone as wc
+if not wc.__file__.startswith(sys.argv[2]):
+    sys.exit("imported %s, not the installed module" % wc.__file__)
+W = wc.cone(wc.Problem.read(sys.argv[1]), "na")
+print(" ".join(" ".join(str(x) for x in r) for r in W["rays"]))
+' "$data/section4.wc" "$dest") > "$tmp/py" 2>&1 \
+        || { cat "$tmp/py" >&2; fail "the installed Python module"; }
+    echo "-1 -5 -1 1 -5 1 1 0 -1" | cmp -s - "$tmp/py" \
+        || { cat "$tmp/py" >&2; fail "the installed Python module computes another cone"; }
 fi
 exit 0

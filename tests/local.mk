@@ -72,7 +72,8 @@ SH_TESTS = \
 	tests/dist-files.sh \
 	tests/completion.sh \
 	tests/cli-batch.sh \
-	tests/cli-text.sh
+	tests/cli-text.sh \
+	tests/python.sh
 TESTS += $(C_TESTS) $(SH_TESTS)
 TEST_EXTENSIONS = .sh
 SH_LOG_COMPILER = $(SHELL)
@@ -80,9 +81,9 @@ AM_TESTS_ENVIRONMENT = \
 	WRENCHCONE='$(abs_top_builddir)/src/wrenchcone'; \
 	top_srcdir='$(abs_top_srcdir)'; \
 	top_builddir='$(abs_top_builddir)'; \
-	CC='$(CC)'; WC_SAN='$(WC_SAN)'; MAKE='$(MAKE)'; \
+	CC='$(CC)'; WC_SAN='$(WC_SAN)'; MAKE='$(MAKE)'; PYTHON='$(PYTHON)'; \
 	LSAN_OPTIONS="suppressions=$(abs_top_srcdir)/tests/lsan.supp:print_suppressions=0$${LSAN_OPTIONS:+:$$LSAN_OPTIONS}"; \
-	export WRENCHCONE top_srcdir top_builddir CC WC_SAN MAKE LSAN_OPTIONS;
+	export WRENCHCONE top_srcdir top_builddir CC WC_SAN MAKE PYTHON LSAN_OPTIONS;
 
 EXTRA_DIST += $(SH_TESTS) tests/bad tests/golden tests/certs tests/lsan.supp \
 	tests/update-golden.py tests/install/one-cone.c tests/cert-tamper.py \

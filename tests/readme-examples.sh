@@ -12,7 +12,9 @@
 # are indented by four spaces, up to the next command or the first line
 # that is not indented, are its expected standard output, byte for byte
 # (blank lines at the end of a block do not count).  Each command must
-# exit 0.
+# exit 0.  The scratch top also has python/ (the module) and lib/ (the
+# build's, holding lib/.libs/, where the module finds the library) for
+# the Python example, which is skipped, with a note, without python3.
 
 : "${WRENCHCONE:?WRENCHCONE is not set}"
 : "${top_srcdir:?top_srcdir is not set}"
@@ -21,6 +23,13 @@ trap 'rm -rf "$tmp"' EXIT
 mkdir "$tmp/top" "$tmp/top/src" "$tmp/ex" || exit 99
 ln -s "$top_srcdir/data" "$tmp/top/data" || exit 99
 ln -s "$WRENCHCONE" "$tmp/top/src/wrenchcone" || exit 99
+ln -s "$top_srcdir/python" "$tmp/top/python" || exit 99
+ln -s "${top_builddir:-$top_srcdir}/lib" "$tmp/top/lib" || exit 99
+# A sanitized library loads into python only after the ASan runtime.
+pyenv=
+if [ -n "${WC_SAN:-}" ]; then
+    pyenv="LD_PRELOAD=$(${CC:-cc} -print-file-name=libasan.so) ASAN_OPTIONS=detect_leaks=0"
+fi
 
 # Split the README into ex/N.cmd and ex/N.out.
 awk -v dir="$tmp/ex" '
@@ -41,7 +50,17 @@ fails=0
 i=1
 while [ "$i" -le "$count" ]; do
     cmd=$(cat "$tmp/ex/$i.cmd")
-    (cd "$tmp/top" && sh -c "$cmd") > "$tmp/got" 2> "$tmp/err" < /dev/null
+    env=
+    case $cmd in
+    *python3*)
+        if ! command -v python3 > /dev/null 2>&1; then
+            echo "README: \$ $cmd: skipped, python3 not found" >&2
+            i=$((i + 1))
+            continue
+        fi
+        env="PYTHONDONTWRITEBYTECODE=1 $pyenv" ;;
+    esac
+    (cd "$tmp/top" && env $env sh -c "$cmd") > "$tmp/got" 2> "$tmp/err" < /dev/null
     status=$?
     if [ "$status" -ne 0 ]; then
         echo "FAIL: README: \$ $cmd: exit status $status" >&2

@@ -414,3 +414,9 @@ wc_request_json(char ** out, size_t * outlen, const char * request,
 {
     return wc_request_json_at(out, outlen, request, len, NULL, 1, err);
 }
+
+void
+wc_request_free(char * out)
+{
+    free(out);
+}

@@ -62,7 +62,9 @@ extern "C" {
 
    Errors in the request itself are located in "<request>", its first
    line being line 1.  When out of memory, *out may be NULL (status
-   WC_EINTERNAL, err says so).  The caller frees *out with free().
+   WC_EINTERNAL, err says so).  The caller frees *out with free(), or
+   with wc_request_free() from code that may not share the library's
+   allocator (another language's runtime).
    Never prints, never exits; not thread-safe (the library is not).  */
 int wc_request_json(char ** out, size_t * outlen, const char * request,
                     size_t len, wc_error_t err);
@@ -73,6 +75,10 @@ int wc_request_json(char ** out, size_t * outlen, const char * request,
 int wc_request_json_at(char ** out, size_t * outlen, const char * request,
                        size_t len, const char * file, long line,
                        wc_error_t err);
+
+/* Free an answer of wc_request_json or wc_request_json_at (NULL is
+   fine): free() of the allocator the library was linked with.  */
+void wc_request_free(char * out);
 
 #ifdef __cplusplus
 }
