@@ -106,7 +106,8 @@ def test_bad_requests():
                     "mode": "na", "arith": "double"})
     assert "needs \"method\": \"paper\"" in info.value.message
     status, answer = wc.request_json("[1, 2")
-    assert status == 2 and answer.startswith('{"error": ')
+    assert status == 2 and answer.startswith(
+        '{"format": "wrenchcone-json/1", "error": ')
     with pytest.raises(TypeError):
         wc.Problem(path="a.wc", text="mass 1")
     with pytest.raises(TypeError):

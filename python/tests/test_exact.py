@@ -84,7 +84,7 @@ def test_section4_trace():
 
 def test_section4_modes():
     M = wc.modes(wc.Problem.read("data/section4.wc"))
-    assert M == {"fixels": 2, "count": 8,
+    assert M == {"format": "wrenchcone-json/1", "fixels": 2, "count": 8,
                  "modes": ["la", "ls", "na", "ns", "ra", "rs", "sa", "ss"]}
 
 
@@ -93,7 +93,8 @@ FIGURE5_MODES = ["ll", "ls", "nn", "ns", "rr", "rs", "sl", "sn", "sr", "ss"]
 
 def test_figure5_modes():
     M = wc.modes(wc.Problem.read("data/disk-two-fixels.wc"))
-    assert M == {"fixels": 2, "modes": FIGURE5_MODES, "count": 10}
+    assert M == {"format": "wrenchcone-json/1", "fixels": 2,
+                 "modes": FIGURE5_MODES, "count": 10}
 
 
 def test_figure5_witnesses():

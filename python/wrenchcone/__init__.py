@@ -243,7 +243,7 @@ def request(req):
     comparison beyond its tolerance is an answer, not an error."""
     status, answer = request_json(json.dumps(req))
     doc = json.loads(answer)
-    if isinstance(doc, dict) and set(doc) == {"error"} and status != 0:
+    if isinstance(doc, dict) and set(doc) - {"format"} == {"error"} and status != 0:
         e = doc["error"]
         raise _ERRORS.get(e.get("status", status), Error)(
             e.get("message"), e.get("file"), e.get("line"), e.get("column"),
