@@ -156,13 +156,14 @@ if [ -n "$py" ] && [ "$py" != : ]; then
     libdir=$(dirname "$so")
     grep -qxF "_INSTALLED_LIBDIR = '${libdir#"$dest"}'" "$init" \
         || fail "the installed module does not name the library's directory ${libdir#"$dest"}"
+    # Only python gets the ASan runtime (see python.sh).
+    san=
     if [ -n "$WC_SAN" ]; then
-        LD_PRELOAD=$(${CC:-cc} -print-file-name=libasan.so)
-        ASAN_OPTIONS=detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}
-        export LD_PRELOAD ASAN_OPTIONS
+        san="env LD_PRELOAD=$(${CC:-cc} -print-file-name=libasan.so) ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
     fi
-    (cd "$tmp" && PYTHONPATH=$(dirname "$(dirname "$init")") WRENCHCONE_LIB=$so \
-        PYTHONDONTWRITEBYTECODE=1 "$py" -c '
+    pypath=$(dirname "$(dirname "$init")")
+    (cd "$tmp" && PYTHONPATH=$pypath WRENCHCONE_LIB=$so \
+        PYTHONDONTWRITEBYTECODE=1 $san "$py" -c '
 import sys, wrenchcone as wc
 if not wc.__file__.startswith(sys.argv[2]):
     sys.exit("imported %s, not the installed module" % wc.__file__)

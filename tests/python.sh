@@ -29,11 +29,12 @@ lib=$top_builddir/lib/.libs/libwrenchcone.so
 [ -f "$lib" ] || { echo "FAIL: $lib was not built" >&2; exit 1; }
 
 # A sanitized library loads into python only after the ASan runtime;
-# python's own allocations are not ours to check for leaks.
+# python's own allocations are not ours to check for leaks.  Only pytest
+# gets the preload (detect_leaks=0 last, so that it wins over the
+# caller's options): not this script's own commands.
+san=
 if [ -n "$WC_SAN" ]; then
-    LD_PRELOAD=$(${CC:-cc} -print-file-name=libasan.so)
-    ASAN_OPTIONS=detect_leaks=0${ASAN_OPTIONS:+:$ASAN_OPTIONS}
-    export LD_PRELOAD ASAN_OPTIONS
+    san="env LD_PRELOAD=$(${CC:-cc} -print-file-name=libasan.so) ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0"
 fi
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/python.XXXXXX") || exit 99
 trap 'rm -rf "$tmp"' EXIT
@@ -42,5 +43,5 @@ WRENCHCONE_LIB=$lib PYTHONPATH=$top_srcdir/python PYTHONDONTWRITEBYTECODE=1 \
     TMPDIR=$tmp
 export WRENCHCONE_LIB PYTHONPATH PYTHONDONTWRITEBYTECODE TMPDIR
 cd "$tmp" || exit 99
-$pytest -q -p no:cacheprovider --rootdir="$tmp" --basetemp="$tmp/pytest" \
+$san $pytest -q -p no:cacheprovider --rootdir="$tmp" --basetemp="$tmp/pytest" \
     "$top_srcdir"/python/tests/test_*.py
