@@ -42,7 +42,8 @@ C_TESTS = \
 	tests/t-planbits \
 	tests/t-draw \
 	tests/t-request \
-	tests/t-decimals
+	tests/t-decimals \
+	tests/t-foreignnum
 check_PROGRAMS += $(C_TESTS) tests/corpus-check
 LDADD = $(TEST_LIBS)
 tests_corpus_check_LDADD = lib/libwc.la

@@ -23,6 +23,14 @@
 #include "core/problem.h"
 #include "exact/vec3.h"
 
+static void
+qv3_swap(fmpq * a, fmpq * b)
+{
+    fmpq_swap(a, b);
+    fmpq_swap(a + 1, b + 1);
+    fmpq_swap(a + 2, b + 2);
+}
+
 void
 _wc_rowbuf_init(_wc_rowbuf * b)
 {
@@ -41,7 +49,7 @@ _wc_rowbuf_clear(_wc_rowbuf * b)
 }
 
 void
-_wc_rowbuf_push(_wc_rowbuf * b, const fmpq * x, long line)
+_wc_rowbuf_push(_wc_rowbuf * b, fmpq * x, long line)
 {
     if (b->n == b->alloc)
     {
@@ -53,21 +61,21 @@ _wc_rowbuf_push(_wc_rowbuf * b, const fmpq * x, long line)
         b->line = flint_realloc(b->line, sizeof(long) * a);
         b->alloc = a;
     }
-    _wc_qv3_set(b->v + 3 * b->n, x);
+    qv3_swap(b->v + 3 * b->n, x);
     b->line[b->n] = line;
     b->n++;
 }
 
-/* Move the rows into a matrix and a line array.  */
+/* Move the rows into a matrix and a line array (b keeps zeros).  */
 static void
-rowbuf_take(fmpq_mat_t M, long ** lines, const _wc_rowbuf * b)
+rowbuf_take(fmpq_mat_t M, long ** lines, _wc_rowbuf * b)
 {
     slong i;
 
     fmpq_mat_clear(M);
     fmpq_mat_init(M, b->n, 3);
     for (i = 0; i < b->n; i++)
-        _wc_qv3_set(WC_ROW(M, i), b->v + 3 * i);
+        qv3_swap(WC_ROW(M, i), b->v + 3 * i);
     flint_free(*lines);
     *lines = flint_malloc(sizeof(long) * (b->n + 1));
     if (b->n > 0)
@@ -118,7 +126,7 @@ wc_foreign_clear(wc_foreign_t F)
 /* Add a representation built from the buffers.  */
 void
 _wc_foreign_add_rep(wc_foreign_t F, wc_rep_kind kind, long line, int empty,
-                    const _wc_rowbuf * rows, const _wc_rowbuf * lin)
+                    _wc_rowbuf * rows, _wc_rowbuf * lin)
 {
     wc_rep_struct * R = F->reps + F->nreps++;
 
@@ -156,6 +164,156 @@ _wc_located_quoting(const _wc_source * s, long line, long col,
     return WC_EINPUT;
 }
 
+/* ---- numbers ---- */
+
+/* The fast reading of a plain decimal: [sign] digits [. digits]
+   [e|E [sign] digits], the common case of a float code's output.  The
+   digits go into machine words, 19 at a time, and the value D 10^E
+   (D without its trailing zeros) is set in lowest terms without a gcd:
+   D is not a multiple of 10, so gcd(D, 10^k) is the power of 2 or the
+   power of 5 that D and 10^k share.  Returns 1 with x set, or 0 with x
+   untouched when t[0..n) is anything else (an exponent over the bound, a
+   fraction, bad syntax): the general reading below then decides, with
+   its messages.  */
+
+#define DIGITS_PER_WORD 19      /* 10^19 < 2^64 */
+
+/* The decimal digits t[i..j) minus the dot at position dot (if inside),
+   without leading zeros, into f.  */
+static void
+digits_value(fmpz_t f, const char * t, size_t i, size_t j, size_t dot)
+{
+    ulong w = 0, p = 1;
+    int c = 0;
+
+    fmpz_zero(f);
+    for (; i < j; i++)
+    {
+        if (i == dot)
+            continue;
+        w = 10 * w + (ulong) (t[i] - '0');
+        p *= 10;
+        if (++c == DIGITS_PER_WORD)
+        {
+            fmpz_mul_ui(f, f, p);
+            fmpz_add_ui(f, f, w);
+            w = 0;
+            p = 1;
+            c = 0;
+        }
+    }
+    if (fmpz_is_zero(f))
+        fmpz_set_ui(f, w);
+    else if (c > 0)
+    {
+        fmpz_mul_ui(f, f, p);
+        fmpz_add_ui(f, f, w);
+    }
+}
+
+/* num/den := D / 10^k in lowest terms, D > 0 not a multiple of 10.  */
+static void
+over_power_of_ten(fmpz_t num, fmpz_t den, ulong k)
+{
+    ulong a = 0, b = 0;
+
+    if (fmpz_is_even(num))
+    {
+        a = fmpz_val2(num);
+        if (a > k)
+            a = k;
+        fmpz_fdiv_q_2exp(num, num, a);
+    }
+    else
+        while (b < k && fmpz_divisible_si(num, 5))
+        {
+            fmpz_divexact_ui(num, num, 5);
+            b++;
+        }
+    if (k - b <= 27)                    /* 5^27 < 2^63 */
+    {
+        ulong p = 1, j;
+
+        for (j = 0; j < k - b; j++)
+            p *= 5;
+        fmpz_set_ui(den, p);
+    }
+    else
+    {
+        fmpz_set_ui(den, 5);
+        fmpz_pow_ui(den, den, k - b);
+    }
+    fmpz_mul_2exp(den, den, k - a);
+}
+
+static int
+fast_decimal(fmpq_t x, const char * t, size_t n)
+{
+    size_t i = 0, d0, d1, dot = n, first, last, nfrac = 0;
+    ulong e = 0;
+    slong E;
+    int neg = 0, eneg = 0;
+
+    if (i < n && (t[i] == '+' || t[i] == '-'))
+        neg = t[i++] == '-';
+    d0 = i;
+    while (i < n && t[i] >= '0' && t[i] <= '9')
+        i++;
+    if (i < n && t[i] == '.')
+    {
+        dot = i++;
+        while (i < n && t[i] >= '0' && t[i] <= '9')
+            i++;
+        nfrac = i - dot - 1;
+    }
+    d1 = i;
+    if (d1 - d0 == (dot < n ? 1 : 0))
+        return 0;                       /* no digit */
+    if (i < n && (t[i] == 'e' || t[i] == 'E'))
+    {
+        size_t e0;
+
+        if (++i < n && (t[i] == '+' || t[i] == '-'))
+            eneg = t[i++] == '-';
+        for (e0 = i; i < n && t[i] >= '0' && t[i] <= '9'; i++)
+            if ((e = 10 * e + (ulong) (t[i] - '0')) > WC_FOREIGN_MAX_EXPONENT)
+                return 0;
+        if (i == e0)
+            return 0;
+    }
+    if (i != n)
+        return 0;
+    /* the significant digits t[first..last), skipping the dot */
+    for (first = d0; first < d1 && (t[first] == '0' || first == dot); first++)
+        ;
+    if (first == d1)
+    {
+        fmpq_zero(x);
+        return 1;
+    }
+    E = (eneg ? -(slong) e : (slong) e) - (slong) nfrac;
+    for (last = d1; t[last - 1] == '0' || last - 1 == dot; last--)
+        if (last - 1 != dot)
+            E++;
+    digits_value(fmpq_numref(x), t, first, last, dot);
+    if (E >= 0)
+    {
+        fmpz_one(fmpq_denref(x));
+        if (E > 0)
+        {
+            fmpz_set_ui(fmpq_denref(x), 10);
+            fmpz_pow_ui(fmpq_denref(x), fmpq_denref(x), (ulong) E);
+            fmpz_mul(fmpq_numref(x), fmpq_numref(x), fmpq_denref(x));
+            fmpz_one(fmpq_denref(x));
+        }
+    }
+    else
+        over_power_of_ten(fmpq_numref(x), fmpq_denref(x), (ulong) -E);
+    if (neg)
+        fmpz_neg(fmpq_numref(x), fmpq_numref(x));
+    return 1;
+}
+
 /* An exact number spelt t[0..n), located at (line, col) on error.  */
 int
 _wc_foreign_number(fmpq_t x, const _wc_source * s, const char * t,
@@ -168,6 +326,8 @@ _wc_foreign_number(fmpq_t x, const _wc_source * s, const char * t,
     if (n > WC_FOREIGN_MAX_CHARS)
         return _wc_located(s, line, col, "number too long (over %d "
                            "characters)", WC_FOREIGN_MAX_CHARS);
+    if (fast_decimal(x, t, n))
+        return WC_OK;
     for (i = 0; i < n; i++)
         if (t[i] == 'e' || t[i] == 'E')
             e = i + 1;

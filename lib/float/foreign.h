@@ -37,13 +37,14 @@ _wc_rowbuf;
 
 void _wc_rowbuf_init(_wc_rowbuf * b);
 void _wc_rowbuf_clear(_wc_rowbuf * b);
-void _wc_rowbuf_push(_wc_rowbuf * b, const fmpq * x, long line);
+/* Push the row x, taking its numbers (x is left with others).  */
+void _wc_rowbuf_push(_wc_rowbuf * b, fmpq * x, long line);
 
 /* Append to F a representation built from the buffers (either may be
-   NULL: no rows).  F must hold fewer than 2: the readers check it.  */
+   NULL: no rows), taking their numbers (the buffers keep zeros).  F must
+   hold fewer than 2: the readers check it.  */
 void _wc_foreign_add_rep(wc_foreign_t F, wc_rep_kind kind, long line,
-                         int empty, const _wc_rowbuf * rows,
-                         const _wc_rowbuf * lin);
+                         int empty, _wc_rowbuf * rows, _wc_rowbuf * lin);
 
 /* The text being read, and where its errors go.  */
 typedef struct

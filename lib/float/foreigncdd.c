@@ -267,10 +267,12 @@ cdd_row(cdd_block * B, const _wc_source * s, long no, const char * text,
 {
     token t[5];
     slong n = tokenize(t, 5, text, start, end), i;
-    fmpq * x = _fmpq_vec_init(4);
+    fmpq x[4];
     long long row = B->nread + 1;
     int status = WC_OK, lin = in_linearity(B, row), zero;
 
+    for (i = 0; i < 4; i++)
+        fmpq_init(x + i);
     if (B->nread == B->m)
     {
         status = _wc_located(s, no, t[0].col, "expected 'end': the header "
@@ -353,7 +355,8 @@ cdd_row(cdd_block * B, const _wc_source * s, long no, const char * text,
     }
 
 cleanup:
-    _fmpq_vec_clear(x, 4);
+    for (i = 0; i < 4; i++)
+        fmpq_clear(x + i);
     return status;
 }
 
