@@ -5,6 +5,7 @@ lib_libwc_la_SOURCES += \
 	lib/exact/vec3.c \
 	lib/exact/hash.c \
 	lib/exact/zvec3set.c \
+	lib/exact/zrow.c \
 	lib/exact/cone.c \
 	lib/exact/cddbridge.c \
 	lib/exact/lp.c \
@@ -27,6 +28,7 @@ noinst_HEADERS += \
 	lib/exact/vec3.h \
 	lib/exact/hash.h \
 	lib/exact/zvec3set.h \
+	lib/exact/zrow.h \
 	lib/exact/cddbridge.h \
 	lib/exact/lp.h \
 	lib/exact/hull3.h \

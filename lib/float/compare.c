@@ -18,6 +18,7 @@
 #include "float/compare.h"
 #include "float/angle.h"
 #include "exact/vec3.h"
+#include "exact/zrow.h"
 
 static void
 cmp_rep_init(wc_cmp_rep_struct * C)
@@ -139,28 +140,6 @@ angles_to(wc_cmp_vec * U, const fmpz_mat_t A, const wc_cone_t C)
     _fmpq_vec_clear(v, 3);
 }
 
-/* A row of a matrix and its index, to sort and search rows.  */
-typedef struct
-{
-    const fmpz * v;
-    slong i;
-}
-zrow;
-
-/* Lexicographic order of integer 3-vectors (qsort, bsearch).  */
-static int
-zv3_cmp(const void * a, const void * b)
-{
-    const fmpz * x = ((const zrow *) a)->v, * y = ((const zrow *) b)->v;
-    slong j;
-    int c;
-
-    for (j = 0; j < 3; j++)
-        if ((c = fmpz_cmp(x + j, y + j)) != 0)
-            return c;
-    return 0;
-}
-
 /* z := the primitive integer vector on the ray of p (nonzero).  Two
    vectors are on the same ray iff their primitive vectors are equal, and
    the canonical vectors of a cone are primitive: so a vector's ray is
@@ -204,7 +183,7 @@ source_lines(wc_cmp_rep_struct * C, wc_cmp_vec * U, const fmpz_mat_t X,
     fmpq * q = _fmpq_vec_init(3);
     fmpz * z = _fmpz_vec_init(3);
     slong r = _wc_rows_span(dir, S), nx = fmpz_mat_nrows(X), i, j, c;
-    zrow * sorted = malloc(sizeof(zrow) * (nx + 1));
+    _wc_zrow * sorted = malloc(sizeof(_wc_zrow) * (nx + 1));
 
     C->redundant = flint_malloc(sizeof(long) * (fmpq_mat_nrows(P) + 1));
     if (sorted == NULL)
@@ -220,10 +199,10 @@ source_lines(wc_cmp_rep_struct * C, wc_cmp_vec * U, const fmpz_mat_t X,
         sorted[i].v = WC_ROW(X, i);
         sorted[i].i = i;
     }
-    qsort(sorted, nx, sizeof(zrow), zv3_cmp);
+    qsort(sorted, nx, sizeof(_wc_zrow), _wc_zrow_cmp);
     for (j = 0; j < fmpq_mat_nrows(P); j++)
     {
-        zrow key, * hit = NULL;
+        _wc_zrow key, * hit = NULL;
         int on = 0;
 
         _wc_span_project(q, WC_ROW(P, j), r, dir);
@@ -233,7 +212,8 @@ source_lines(wc_cmp_rep_struct * C, wc_cmp_vec * U, const fmpz_mat_t X,
         {
             primitive(z, p);
             key.v = z;
-            hit = bsearch(&key, sorted, nx, sizeof(zrow), zv3_cmp);
+            hit = bsearch(&key, sorted, nx, sizeof(_wc_zrow),
+                          _wc_zrow_cmp);
         }
         /* a second row on the same ray is redundant too */
         if (hit != NULL && U[hit->i].line == 0)

@@ -43,6 +43,7 @@
 #include "float/compare.h"
 #include "float/angle.h"
 #include "exact/vec3.h"
+#include "exact/zrow.h"
 
 /* ------------------------------------------------------------------ */
 /* Unit vectors in doubles, for the candidates of minimax_polar.  */
@@ -489,26 +490,6 @@ typedef struct
 }
 tightmap;
 
-typedef struct
-{
-    const fmpz * v;
-    slong i;
-}
-zrow;
-
-static int
-zrow_cmp(const void * a, const void * b)
-{
-    const fmpz * x = ((const zrow *) a)->v, * y = ((const zrow *) b)->v;
-    slong j;
-    int c;
-
-    for (j = 0; j < 3; j++)
-        if ((c = fmpz_cmp(x + j, y + j)) != 0)
-            return c;
-    return 0;
-}
-
 static void
 tightmap_clear(tightmap * T)
 {
@@ -521,13 +502,13 @@ tightmap_clear(tightmap * T)
 /* The facet row of the 2-dimensional face F of B (pointed, dim 3), or -1
    when the search fails (it cannot, for a canonical cone).  */
 static slong
-face_facet(const wc_cone_t B, const wc_face_struct * F, const zrow * sorted,
-           fmpz * h, fmpz_t t)
+face_facet(const wc_cone_t B, const wc_face_struct * F,
+           const _wc_zrow * sorted, fmpz * h, fmpz_t t)
 {
     const fmpz * a = WC_ROW(B->rays, F->rays[0]);
     const fmpz * b = WC_ROW(B->rays, F->rays[1]);
     slong j, c;
-    zrow key, * hit;
+    _wc_zrow key, * hit;
 
     _wc_zvec3_cross(h, a, b);
     _fmpz_vec_content(t, h, 3);
@@ -547,8 +528,8 @@ face_facet(const wc_cone_t B, const wc_face_struct * F, const zrow * sorted,
     if (fmpz_sgn(t) > 0)
         _fmpz_vec_neg(h, h, 3);
     key.v = h;
-    hit = bsearch(&key, sorted, fmpz_mat_nrows(B->ineqs), sizeof(zrow),
-                  zrow_cmp);
+    hit = bsearch(&key, sorted, fmpz_mat_nrows(B->ineqs),
+                  sizeof(_wc_zrow), _wc_zrow_cmp);
     return hit == NULL ? -1 : hit->i;
 }
 
@@ -558,7 +539,7 @@ static int
 tightmap_init(tightmap * T, const wc_cone_t B)
 {
     slong m = fmpz_mat_nrows(B->ineqs), k = fmpz_mat_nrows(B->rays), f, i;
-    zrow * sorted;
+    _wc_zrow * sorted;
     fmpz * h;
     fmpz_t t;
 
@@ -566,7 +547,7 @@ tightmap_init(tightmap * T, const wc_cone_t B)
     T->facet = T->start = T->rows = NULL;
     if (B->dim != 3 || B->lineality_dim != 0 || k < 3)
         return 0;
-    sorted = flint_malloc(sizeof(zrow) * (m + 1));
+    sorted = flint_malloc(sizeof(_wc_zrow) * (m + 1));
     T->facet = flint_malloc(sizeof(slong) * (B->nfaces + 1));
     T->start = flint_calloc(k + 2, sizeof(slong));
     T->rows = flint_malloc(sizeof(slong) * (2 * B->nfaces + 1));
@@ -577,7 +558,7 @@ tightmap_init(tightmap * T, const wc_cone_t B)
         sorted[i].v = WC_ROW(B->ineqs, i);
         sorted[i].i = i;
     }
-    qsort(sorted, m, sizeof(zrow), zrow_cmp);
+    qsort(sorted, m, sizeof(_wc_zrow), _wc_zrow_cmp);
     T->on = 1;
     for (f = 0; f < B->nfaces; f++)
     {
