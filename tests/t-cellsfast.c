@@ -25,6 +25,7 @@
 
 #include "wrenchcone.h"
 #include "analysis/planparts.h"
+#include "exact/arrangement.h"
 #include "testutil.h"
 #include "ref-cells.h"
 
@@ -171,6 +172,57 @@ compare(const fmpz_mat_t N, const char * what)
     wc_error_clear(err);
 }
 
+/* A random entry: small, near the limit of a word fmpz (2^62), or
+   multiprecision, either sign.  */
+static void
+rand_entry(fmpz_t x)
+{
+    slong k = wctest_randint(0, 3);
+
+    fmpz_set_si(x, wctest_randint(-5, 5));
+    if (k == 1)
+        fmpz_set_si(x, COEFF_MAX - wctest_randint(0, 3));
+    else if (k == 2)
+        fmpz_set_ui(x, (ulong) wctest_rand() >> wctest_randint(1, 40));
+    else if (k == 3)
+        fmpz_mul_2exp(x, x, wctest_randint(60, 70));
+    if (wctest_chance(1, 2))
+        fmpz_neg(x, x);
+}
+
+/* _wc_angle_cmp (words when it can) against the cross product in fmpz.  */
+static void
+check_angle_cmp(void)
+{
+    fmpz_t a[4], c, d;
+    slong j;
+    int got, want;
+
+    fmpz_init(c);
+    fmpz_init(d);
+    for (j = 0; j < 4; j++)
+    {
+        fmpz_init(a[j]);
+        rand_entry(a[j]);
+    }
+    if (wctest_chance(1, 4))    /* parallel */
+    {
+        fmpz_mul_si(a[2], a[0], 3);
+        fmpz_mul_si(a[3], a[1], 3);
+    }
+    fmpz_mul(c, a[0], a[3]);
+    fmpz_mul(d, a[1], a[2]);
+    want = -fmpz_cmp(c, d);
+    want = (want > 0) - (want < 0);
+    got = _wc_angle_cmp(a[0], a[1], a[2], a[3]);
+    if (got != want)
+        wctest_fail("angle_cmp: %d, expected %d", got, want);
+    for (j = 0; j < 4; j++)
+        fmpz_clear(a[j]);
+    fmpz_clear(c);
+    fmpz_clear(d);
+}
+
 /* The planes of the plan of a random problem (as wc_plan gathers them).  */
 static void
 plan_planes(void)
@@ -206,6 +258,8 @@ main(void)
 
         if (!wctest_iter(i))
             continue;
+        for (style = 0; style < 50; style++)
+            check_angle_cmp();
         style = i % 7;
         if (style == 6)
         {

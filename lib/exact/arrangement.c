@@ -168,20 +168,38 @@ typedef struct
 }
 angle_ref;
 
+int
+_wc_angle_cmp(const fmpz_t ax, const fmpz_t ay, const fmpz_t bx,
+              const fmpz_t by)
+{
+    fmpz_t c;
+    int s;
+
+#ifdef __SIZEOF_INT128__
+    if (!COEFF_IS_MPZ(*ax) && !COEFF_IS_MPZ(*ay) && !COEFF_IS_MPZ(*bx)
+        && !COEFF_IS_MPZ(*by))
+    {
+        /* below 2^62 each: the products below 2^124 */
+        __int128 d = (__int128) *ax * *by - (__int128) *ay * *bx;
+
+        return (d < 0) - (d > 0);
+    }
+#endif
+    fmpz_init(c);
+    fmpz_mul(c, ax, by);
+    fmpz_submul(c, ay, bx);
+    s = -fmpz_sgn(c);
+    fmpz_clear(c);
+    return s;
+}
+
 /* By angle in [0, pi): a before b when b is counter-clockwise of a.  */
 static int
 angle_cmp(const void * p, const void * q)
 {
     const angle_ref * a = p, * b = q;
-    fmpz_t c;
-    int s;
 
-    fmpz_init(c);
-    fmpz_mul(c, a->x, b->y);
-    fmpz_submul(c, a->y, b->x);
-    s = -fmpz_sgn(c);
-    fmpz_clear(c);
-    return s;
+    return _wc_angle_cmp(a->x, a->y, b->x, b->y);
 }
 
 typedef struct
