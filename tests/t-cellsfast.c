@@ -1,6 +1,7 @@
 /* t-cellsfast.c -- wc_cells_build (incremental keys, Zobrist hashes, the
    chamber multiplier without divisions, signs sorted in place) against
-   the former build kept in ref-cells.c, and the sign bitsets of the plan
+   the former build kept in ref-cells.c, _wc_angle_cmp against the fmpz
+   cross product, and the sign bitsets of the plan
    (planbits.c, built a word of cells at a time) against the signs.
 
    Copyright (C) 2026 the wrenchcone authors.
@@ -11,8 +12,9 @@
    cells, and every cell's dimension, point and sign vector.  Layouts:
    small random normals (repeated, opposite and multiple rows, zero rows,
    coordinate planes), pencils of planes through one or a few common
-   lines, entries past 2^16 (the multiprecision path, alone or mixed with
-   small rows), no rows at all, and the planes of real plans of random
+   lines, large entries (sector points past a word: the fmpz path; plane
+   entries past 2^62: no word path at all; alone or mixed with small
+   rows), no rows at all, and the planes of real plans of random
    problems (testutil.h: coincident and collinear fixels, normals through
    one point, opposed normals).  */
 
@@ -83,7 +85,7 @@ layout(fmpz_mat_t N, slong style)
             {
                 fmpz_mul_2exp(h + wctest_randint(0, 2),
                               h + wctest_randint(0, 2),
-                              wctest_randint(14, 40));
+                              wctest_randint(14, 70));
                 fmpz_add_si(h, h, wctest_randint(-9, 9));
             }
         }
@@ -101,8 +103,10 @@ layout(fmpz_mat_t N, slong style)
 static void
 same_cells(const wc_cells_t A, const wc_cells_t B, const char * what)
 {
-    slong i, m = A->nplanes;
+    slong i, p, m = A->nplanes;
+    fmpz_t t;
 
+    fmpz_init(t);
     if (A->nplanes != B->nplanes || !fmpz_mat_equal(A->planes, B->planes))
         wctest_fail("%s: the planes differ (%ld, %ld of them)", what,
                     (long) A->nplanes, (long) B->nplanes);
@@ -118,7 +122,15 @@ same_cells(const wc_cells_t A, const wc_cells_t B, const char * what)
             wctest_fail("%s: cell %ld: the points differ", what, (long) i);
         if (memcmp(A->sign + i * m, B->sign + i * m, m) != 0)
             wctest_fail("%s: cell %ld: the signs differ", what, (long) i);
+        for (p = 0; p < m; p++)
+        {
+            _fmpz_vec_dot(t, A->planes->rows[p], A->point->rows[i], 3);
+            if (fmpz_sgn(t) != A->sign[i * m + p])
+                wctest_fail("%s: cell %ld: the sign on plane %ld is not "
+                            "that of its point", what, (long) i, (long) p);
+        }
     }
+    fmpz_clear(t);
 }
 
 /* The bitsets of X against the signs of A, bit by bit.  */

@@ -40,10 +40,15 @@
 #include "exact/arrangement.h"
 #include "exact/cells.h"
 
-/* Planes with entries below 2^16 give lines below 2^33 and sector points
-   below 2^34, and the dot products a chamber's point needs fit a 64-bit
-   word (below 3 2^50): then they are done in words.  */
-#define SMALL_BITS 16
+/* Planes whose entries are word fmpz (below 2^62 in absolute value) and
+   a sector point whose entries are too give dot products below 2^126:
+   then the chamber multiplier is found in 128-bit words.  */
+#if defined(__SIZEOF_INT128__) && FLINT_BITS == 64
+#define WIDE 1
+typedef __int128 wide;
+#else
+#define WIDE 0
+#endif
 
 /* ---------------------------------------------------------------------
    The cell list under construction.  Signs are kept as keys: sign + 1
@@ -168,11 +173,13 @@ typedef struct
 {
     cell_list * L;
     const fmpz_mat_struct * H;
-    slong * h64;            /* H as words when its entries are below
-                               2^SMALL_BITS, else NULL */
+    slong * h64;            /* H as words when WIDE and its entries are
+                               word fmpz, else NULL */
     slong hplane;           /* the plane hh is for */
     fmpz * hh;              /* h_q . h_p, m entries */
-    slong * hh64;           /* the same in words, with h64 */
+#if WIDE
+    wide * hh128;           /* the same in 128-bit words, with h64 */
+#endif
     slong sec;              /* the current sector's cell */
     int have_k;             /* k is set for it */
     fmpz_t k;
@@ -189,26 +196,26 @@ collect_init(collect * C, cell_list * L, const fmpz_mat_t H)
     C->L = L;
     C->H = H;
     C->h64 = NULL;
-#if FLINT_BITS == 64
+#if WIDE
     C->h64 = flint_malloc(sizeof(slong) * (3 * m + 1));
     for (i = 0; i < 3 * m && C->h64 != NULL; i++)
     {
         const fmpz * x = fmpz_mat_entry(H, i / 3, i % 3);
 
-        if (fmpz_bits(x) > SMALL_BITS)
+        if (COEFF_IS_MPZ(*x))
         {
             flint_free(C->h64);
             C->h64 = NULL;
         }
         else
-            C->h64[i] = fmpz_get_si(x);
+            C->h64[i] = *x;
     }
+    C->hh128 = flint_malloc(sizeof(wide) * (m + 1));
 #else
     (void) i;
 #endif
     C->hplane = -1;
     C->hh = _fmpz_vec_init(m + 1);
-    C->hh64 = flint_malloc(sizeof(slong) * (m + 1));
     C->sec = -1;
     C->have_k = 0;
     fmpz_init(C->k);
@@ -221,11 +228,42 @@ collect_clear(collect * C)
 {
     flint_free(C->h64);
     _fmpz_vec_clear(C->hh, C->L->m + 1);
-    flint_free(C->hh64);
+#if WIDE
+    flint_free(C->hh128);
+#endif
     fmpz_clear(C->k);
     fmpz_clear(C->t);
     fmpz_clear(C->a);
 }
+
+#if WIDE
+/* chamber_multiplier in 128-bit words: h64 set, mid's entries words.  */
+static int
+multiplier_wide(collect * C, slong p, const fmpz * mid,
+                const unsigned char * seckey)
+{
+    const slong * h = C->h64;
+    slong m = C->L->m, q;
+    wide x = mid[0], y = mid[1], z = mid[2], k = 1;
+
+    for (q = 0; q < m; q++)
+    {
+        wide d = h[3 * q] * x + h[3 * q + 1] * y + h[3 * q + 2] * z;
+        wide e = C->hh128[q];
+
+        if ((d > 0) - (d < 0) + 1 != seckey[q])
+            return 0;
+        d = d < 0 ? -d : d;
+        e = e < 0 ? -e : e;
+        /* d > 0 but on p (the sector's signs, checked); a division only
+           when |h_q . h_p| >= |h_q . mid| */
+        if (q != p && e >= d && e / d >= k)
+            k = e / d + 1;
+    }
+    fmpz_set_uiui(C->k, (ulong) (k >> 64), (ulong) k);
+    return 1;
+}
+#endif
 
 /* Check the signs seckey of the sector with point mid on plane p against
    the dot products there, and set C->k to a multiplier for the points of
@@ -235,7 +273,6 @@ static int
 chamber_multiplier(collect * C, slong p, const fmpz * mid,
                    const unsigned char * seckey)
 {
-    const slong * h64 = C->h64;
     slong m = C->L->m, q;
 
     if (C->hplane != p)
@@ -243,32 +280,20 @@ chamber_multiplier(collect * C, slong p, const fmpz * mid,
         for (q = 0; q < m; q++)
         {
             _fmpz_vec_dot(C->hh + q, WC_ROW(C->H, q), WC_ROW(C->H, p), 3);
-            if (h64 != NULL)
-                C->hh64[q] = fmpz_get_si(C->hh + q);
+#if WIDE
+            if (C->h64 != NULL)
+                C->hh128[q] = (wide) C->h64[3 * q] * C->h64[3 * p]
+                    + (wide) C->h64[3 * q + 1] * C->h64[3 * p + 1]
+                    + (wide) C->h64[3 * q + 2] * C->h64[3 * p + 2];
+#endif
         }
         C->hplane = p;
     }
-    if (h64 != NULL)
-    {
-        slong x = fmpz_get_si(mid), y = fmpz_get_si(mid + 1),
-            z = fmpz_get_si(mid + 2), k = 1;
-
-        for (q = 0; q < m; q++)
-        {
-            slong d = h64[3 * q] * x + h64[3 * q + 1] * y + h64[3 * q + 2] * z;
-            slong e = FLINT_ABS(C->hh64[q]);
-
-            if ((d > 0) - (d < 0) + 1 != seckey[q])
-                return 0;
-            d = FLINT_ABS(d);
-            /* d > 0 but on p (the sector's signs, checked); a division
-               only when |h_q . h_p| >= |h_q . mid| */
-            if (q != p && e >= d && e / d >= k)
-                k = e / d + 1;
-        }
-        fmpz_set_si(C->k, k);
-        return 1;
-    }
+#if WIDE
+    if (C->h64 != NULL && !COEFF_IS_MPZ(mid[0]) && !COEFF_IS_MPZ(mid[1])
+        && !COEFF_IS_MPZ(mid[2]))
+        return multiplier_wide(C, p, mid, seckey);
+#endif
     fmpz_zero(C->k);
     for (q = 0; q < m; q++)
     {
