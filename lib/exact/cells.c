@@ -301,7 +301,9 @@ chamber_multiplier(collect * C, slong p, const fmpz * mid,
 
         if (s + 1 != seckey[q])
             return 0;
-        if (q == p || fmpz_is_zero(C->hh + q))
+        /* a quotient below 1 cannot raise k: no division */
+        if (q == p || fmpz_is_zero(C->hh + q)
+            || fmpz_cmpabs(C->hh + q, C->a) < 0)
             continue;
         fmpz_abs(C->a, C->a);
         fmpz_abs(C->t, C->hh + q);
