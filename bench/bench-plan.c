@@ -7,6 +7,9 @@
    Public License, version 2 or (at your option) any later version.
 
    Usage: bench-plan [quick | LIMIT_SECONDS]
+          bench-plan disk|random N [REPEAT]
+   The second form times wc_plan alone on one problem (REPEAT times,
+   default 1) and prints the CPU seconds of each call (for profiling).
    Problems, exact and deterministic:
 
    disk     a unit disk (mass 1, inertia 1/2) near n fixels on its lower
@@ -32,6 +35,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <sys/resource.h>
 
 #include <flint/flint.h>
 #include <flint/fmpq.h>
@@ -176,6 +180,70 @@ literal(const wc_problem_t P, const wc_plan_t R, int * differ,
     return t1 - t0;
 }
 
+static void
+make_problem(wc_problem_t P, const char * family, slong n)
+{
+    wc_error_t err;
+
+    wc_error_init(err);
+    if (strcmp(family, "disk") == 0)
+        disk_problem(P, n);
+    else
+    {
+        wc_random_options o;
+
+        wc_random_options_init(&o);
+        o.fixels = n;
+        o.seed = 1;
+        o.shape = WC_SHAPE_POLYGON;
+        if (wc_random_problem(P, &o, err) != WC_OK)
+            wcbench_die("bench-plan", "random", err);
+        wc_random_options_clear(&o);
+    }
+    wc_error_clear(err);
+}
+
+/* CPU seconds of this process, user + system.  */
+static double
+cpu_now(void)
+{
+    struct rusage u;
+
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_utime.tv_sec + u.ru_stime.tv_sec
+        + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+/* wc_plan alone on one problem, repeat times.  */
+static int
+one(const char * family, slong n, slong repeat)
+{
+    wc_problem_t P;
+    wc_error_t err;
+    slong i;
+
+    wc_problem_init(P);
+    wc_error_init(err);
+    make_problem(P, family, n);
+    for (i = 0; i < repeat; i++)
+    {
+        wc_plan_t R;
+        double t0 = cpu_now(), w0 = wcbench_now();
+
+        wc_plan_init(R);
+        if (wc_plan(R, P, 0, err) != WC_OK)
+            wcbench_die("bench-plan", "plan", err);
+        printf("%s n=%ld: cpu %.3f s, wall %.3f s, cells %ld, planes %ld, "
+               "pieces %ld\n", family, (long) n, cpu_now() - t0,
+               wcbench_now() - w0, (long) R->cells->count,
+               (long) R->cells->nplanes, (long) R->goal->npieces);
+        wc_plan_clear(R);
+    }
+    wc_error_clear(err);
+    wc_problem_clear(P);
+    return 0;
+}
+
 static int
 run(const char * family, double limit)
 {
@@ -198,20 +266,7 @@ run(const char * family, double limit)
         wc_problem_init(P);
         wc_error_init(err);
         wc_plan_init(R);
-        if (strcmp(family, "disk") == 0)
-            disk_problem(P, n);
-        else
-        {
-            wc_random_options o;
-
-            wc_random_options_init(&o);
-            o.fixels = n;
-            o.seed = 1;
-            o.shape = WC_SHAPE_POLYGON;
-            if (wc_random_problem(P, &o, err) != WC_OK)
-                wcbench_die("bench-plan", "random", err);
-            wc_random_options_clear(&o);
-        }
+        make_problem(P, family, n);
         t0 = wcbench_now();
         if (wc_plan(R, P, 0, err) != WC_OK)
             wcbench_die("bench-plan", "plan", err);
@@ -271,6 +326,13 @@ main(int argc, char ** argv)
     double limit = 10;
     int status = 0;
 
+    if (argc > 2)
+    {
+        wc_init();
+        status = one(argv[1], atol(argv[2]), argc > 3 ? atol(argv[3]) : 1);
+        flint_cleanup_master();
+        return status;
+    }
     if (argc > 1)
         limit = strcmp(argv[1], "quick") == 0 ? 1 : atof(argv[1]);
     wc_init();

@@ -12,7 +12,8 @@ tests_libwctest_la_SOURCES = \
 	tests/ref-stab.c tests/ref-stab.h \
 	tests/ref-plan.c tests/ref-plan.h \
 	tests/ref-faces.c tests/ref-faces.h \
-	tests/ref-hull3.c tests/ref-hull3.h
+	tests/ref-hull3.c tests/ref-hull3.h \
+	tests/ref-cells.c tests/ref-cells.h
 
 TEST_LIBS = tests/libwctest.la lib/libwc.la
 C_TESTS = \
@@ -40,6 +41,7 @@ C_TESTS = \
 	tests/t-plan \
 	tests/t-plansound \
 	tests/t-planbits \
+	tests/t-cellsfast \
 	tests/t-draw \
 	tests/t-request \
 	tests/t-decimals \

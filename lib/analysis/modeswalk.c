@@ -56,6 +56,7 @@
 #include "exact/vec3.h"
 #include "exact/hash.h"
 #include "exact/zvec3set.h"
+#include "exact/arrangement.h"
 #include "exact/cone.h"
 #include "analysis/kinematics.h"
 #include "analysis/modeswalk.h"
@@ -750,14 +751,8 @@ static int
 line_cmp(const void * p, const void * q)
 {
     const line_ref * a = p, * b = q;
-    fmpz_t c;
-    int s;
+    int s = _wc_angle_cmp(a->x, a->y, b->x, b->y);
 
-    fmpz_init(c);
-    fmpz_mul(c, a->x, b->y);
-    fmpz_submul(c, a->y, b->x);
-    s = -fmpz_sgn(c);
-    fmpz_clear(c);
     return s != 0 ? s : (a->q > b->q) - (a->q < b->q);
 }
 

@@ -11,6 +11,7 @@
 
 #include <config.h>
 
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -169,40 +170,77 @@ plan_eq25(wc_plan_t R, const int * goal, fmpq * g)
 }
 
 /* The cells of each needed cone, as its nonzero bitset words: cone k
-   has words wi[j] with bits wv[j] for off[k] <= j < off[k + 1].  How
-   many kept cones hold each cell is a bit-sliced counter: bit i of
+   has words wi(j) with bits wv(j) for off[k] <= j < off[k + 1], kept in
+   blocks of 2^BLOCK_BITS entries (never moved once written).  How many
+   kept cones hold each cell is a bit-sliced counter: bit i of
    ctr[b * words + i / FLINT_BITS] is bit b of cell i's count (levels
    bits), so a cone is added or removed a word of cells at a time.  */
+#define BLOCK_BITS 18
+#define BLOCK ((slong) 1 << BLOCK_BITS)
+
 typedef struct
 {
-    slong * off, * wi;
-    ulong * wv;
-    slong len, alloc;
+    slong * off;
+    uint32_t ** wi;
+    ulong ** wv;
+    slong len, nblocks, maxblocks;
     ulong * ctr;
     slong levels, words;
 }
 members;
 
+#define MEMBER_WI(M, j) ((M)->wi[(j) >> BLOCK_BITS][(j) & (BLOCK - 1)])
+#define MEMBER_WV(M, j) ((M)->wv[(j) >> BLOCK_BITS][(j) & (BLOCK - 1)])
+
 static int
 members_push(members * M, slong w, ulong x)
 {
-    if (M->len == M->alloc)
+    if (M->len == M->nblocks * BLOCK)
     {
-        slong a = 2 * M->alloc + 1024;
-        slong * wi = realloc(M->wi, sizeof(slong) * a);
-        ulong * wv;
+        if (M->nblocks == M->maxblocks)
+        {
+            slong a = 2 * M->maxblocks + 16;
+            uint32_t ** wi = realloc(M->wi, sizeof(uint32_t *) * a);
+            ulong ** wv;
 
-        if (wi == NULL)
+            if (wi == NULL)
+                return 0;
+            M->wi = wi;
+            if ((wv = realloc(M->wv, sizeof(ulong *) * a)) == NULL)
+                return 0;
+            M->wv = wv;
+            M->maxblocks = a;
+        }
+        M->wi[M->nblocks] = malloc(sizeof(uint32_t) * BLOCK);
+        M->wv[M->nblocks] = malloc(sizeof(ulong) * BLOCK);
+        if (M->wi[M->nblocks] == NULL || M->wv[M->nblocks] == NULL)
+        {
+            free(M->wi[M->nblocks]);
+            free(M->wv[M->nblocks]);
             return 0;
-        M->wi = wi;
-        if ((wv = realloc(M->wv, sizeof(ulong) * a)) == NULL)
-            return 0;
-        M->wv = wv;
-        M->alloc = a;
+        }
+        M->nblocks++;
     }
-    M->wi[M->len] = w;
-    M->wv[M->len++] = x;
+    MEMBER_WI(M, M->len) = (uint32_t) w;
+    MEMBER_WV(M, M->len) = x;
+    M->len++;
     return 1;
+}
+
+static void
+members_clear(members * M)
+{
+    slong b;
+
+    for (b = 0; b < M->nblocks; b++)
+    {
+        free(M->wi[b]);
+        free(M->wv[b]);
+    }
+    free(M->wi);
+    free(M->wv);
+    free(M->off);
+    free(M->ctr);
 }
 
 /* Add (sign 1) or remove (-1) the cells x of word w to the counts.  */
@@ -279,7 +317,8 @@ members_covered(const members * M, slong k)
     slong j;
 
     for (j = M->off[k]; j < M->off[k + 1]; j++)
-        if ((M->wv[j] & ~members_at_least(M, M->wi[j], 1)) != 0)
+        if ((MEMBER_WV(M, j) & ~members_at_least(M, MEMBER_WI(M, j), 1))
+            != 0)
             return 0;
     return 1;
 }
@@ -323,17 +362,14 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
             continue;
         R->nexact--;
         for (j = M.off[k]; j < M.off[k + 1]; j++)
-            members_count(&M, M.wi[j], M.wv[j], -1);
+            members_count(&M, MEMBER_WI(&M, j), MEMBER_WV(&M, j), -1);
     }
 
     plan_eq25(R, goal, g);
     if ((status = wc_set_from_cells(R->goal, R->cells, goal, err)) == WC_OK)
         status = wc_set_merge(R->goal, R->cells, err);
 cleanup:
-    free(M.off);
-    free(M.wi);
-    free(M.wv);
-    free(M.ctr);
+    members_clear(&M);
     for (k = 0; k < 3; k++)
         fmpq_clear(g + k);
     return status;

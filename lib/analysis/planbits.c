@@ -28,7 +28,7 @@
 int
 _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
 {
-    slong i, p, np = A->nplanes, k;
+    slong i, p, np = A->nplanes, k, w;
 
     memset(X, 0, sizeof(wc_cell_bits));
     X->count = A->count;
@@ -41,14 +41,27 @@ _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
     X->strict = malloc(sizeof(ulong) * (X->words + 1));
     if (X->bits == NULL || X->cand == NULL || X->strict == NULL)
         return 0;
-    for (i = 0; i < A->count; i++)
+    /* a word of cells at a time: their rows are near in memory */
+    for (w = 0; w < X->words; w++)
     {
-        const signed char * s = A->sign + i * np;
-        ulong bit = UWORD(1) << (i % FLINT_BITS);
-        slong w = i / FLINT_BITS;
+        slong lo = w * FLINT_BITS, n = FLINT_MIN(A->count - lo, FLINT_BITS);
 
         for (p = 0; p < np; p++)
-            BITS(X, p, s[p])[w] |= bit;
+        {
+            const signed char * s = A->sign + lo * np + p;
+            ulong neg = 0, pos = 0;
+
+            for (i = 0; i < n; i++)
+            {
+                neg |= (ulong) (s[i * np] < 0) << i;
+                pos |= (ulong) (s[i * np] > 0) << i;
+            }
+            BITS(X, p, -1)[w] = neg;
+            BITS(X, p, 1)[w] = pos;
+            /* n < FLINT_BITS only in the last word */
+            BITS(X, p, 0)[w] = ~(neg | pos)
+                & (n == FLINT_BITS ? ~UWORD(0) : (UWORD(1) << n) - 1);
+        }
     }
     return 1;
 }

@@ -168,20 +168,38 @@ typedef struct
 }
 angle_ref;
 
+int
+_wc_angle_cmp(const fmpz_t ax, const fmpz_t ay, const fmpz_t bx,
+              const fmpz_t by)
+{
+    fmpz_t c;
+    int s;
+
+#ifdef __SIZEOF_INT128__
+    if (!COEFF_IS_MPZ(*ax) && !COEFF_IS_MPZ(*ay) && !COEFF_IS_MPZ(*bx)
+        && !COEFF_IS_MPZ(*by))
+    {
+        /* below 2^62 each: the products below 2^124 */
+        __int128 d = (__int128) *ax * *by - (__int128) *ay * *bx;
+
+        return (d < 0) - (d > 0);
+    }
+#endif
+    fmpz_init(c);
+    fmpz_mul(c, ax, by);
+    fmpz_submul(c, ay, bx);
+    s = -fmpz_sgn(c);
+    fmpz_clear(c);
+    return s;
+}
+
 /* By angle in [0, pi): a before b when b is counter-clockwise of a.  */
 static int
 angle_cmp(const void * p, const void * q)
 {
     const angle_ref * a = p, * b = q;
-    fmpz_t c;
-    int s;
 
-    fmpz_init(c);
-    fmpz_mul(c, a->x, b->y);
-    fmpz_submul(c, a->y, b->x);
-    s = -fmpz_sgn(c);
-    fmpz_clear(c);
-    return s;
+    return _wc_angle_cmp(a->x, a->y, b->x, b->y);
 }
 
 typedef struct
@@ -218,11 +236,29 @@ set_sign(walker * W, slong q, int s)
     }
 }
 
+/* sign(a . b): in 128-bit words when every entry is a word fmpz (below
+   2^62: each product below 2^124, the sum below 2^126), else in fmpz.  */
+static int
+dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t)
+{
+#ifdef __SIZEOF_INT128__
+    if (!COEFF_IS_MPZ(a[0]) && !COEFF_IS_MPZ(a[1]) && !COEFF_IS_MPZ(a[2])
+        && !COEFF_IS_MPZ(b[0]) && !COEFF_IS_MPZ(b[1]) && !COEFF_IS_MPZ(b[2]))
+    {
+        __int128 s = (__int128) a[0] * b[0] + (__int128) a[1] * b[1]
+            + (__int128) a[2] * b[2];
+
+        return (s > 0) - (s < 0);
+    }
+#endif
+    return _wc_zvec3_dot_sgn(a, b, t);
+}
+
 /* The sign of plane q at x.  */
 static void
 update_sign(walker * W, slong q, const fmpz * x)
 {
-    set_sign(W, q, _wc_zvec3_dot_sgn(WC_ROW(W->A->planes, q), x, W->t));
+    set_sign(W, q, dot_sgn(WC_ROW(W->A->planes, q), x, W->t));
 }
 
 static int

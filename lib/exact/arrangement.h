@@ -62,6 +62,14 @@ void _wc_arrangement_clear(_wc_arrangement_t A);
 #define _wc_arrangement_nlines(A) ((A)->lines->count)
 #define _wc_arrangement_nlines_on(A, p) ((A)->loff[(p) + 1] - (A)->loff[p])
 
+/* The order by angle in [0, pi) of two directions (ax, ay) and (bx, by)
+   in a plane's coordinates, each turned into y > 0 or y = 0 < x:
+   negative when b is counter-clockwise of a, positive when a is
+   counter-clockwise of b, 0 when they are parallel.  Words when the
+   entries are small, else fmpz.  */
+int _wc_angle_cmp(const fmpz_t ax, const fmpz_t ay, const fmpz_t bx,
+                  const fmpz_t by);
+
 /* One face, as reported by the walk; valid during the report only.  */
 typedef struct
 {

@@ -40,31 +40,43 @@
 #include "exact/arrangement.h"
 #include "exact/cells.h"
 
-/* Planes with entries below 2^16 give lines below 2^33 and sector points
-   below 2^34, and the dot products a chamber's point needs fit a 64-bit
-   word (below 3 2^50): then they are done in words.  */
-#define SMALL_BITS 16
+/* Planes whose entries are word fmpz (below 2^62 in absolute value) and
+   a sector point whose entries are too give dot products below 2^126:
+   then the chamber multiplier is found in 128-bit words.  */
+#if defined(__SIZEOF_INT128__) && FLINT_BITS == 64
+#define WIDE 1
+typedef __int128 wide;
+#else
+#define WIDE 0
+#endif
 
 /* ---------------------------------------------------------------------
    The cell list under construction.  Signs are kept as keys: sign + 1
-   in a byte, so that memcmp orders them - < 0 < +.  */
+   in a byte, so that memcmp orders them - < 0 < +.  The key of the
+   current face and its hash are kept up to date from the planes the walk
+   says have changed: the hash is the XOR of one random word per plane
+   and key byte (Zobrist hashing), so a face costs O(changed) before its
+   lookup, and a chamber met again one comparison of its key.  */
 
 typedef struct
 {
     slong m;                /* planes */
-    slong cap;              /* cells expected (keys have room for one
-                               more, the candidate) */
+    slong cap;              /* cells expected */
     slong count;
-    unsigned char * key;    /* (cap + 1) x m */
-    uint64_t * hash;        /* cap + 1 */
-    fmpz * pt;              /* (cap + 1) x 3 */
-    slong * dim;            /* cap + 1 */
+    unsigned char * key;    /* cap x m */
+    uint64_t * hash;        /* cap */
+    fmpz * pt;              /* cap x 3 */
+    slong * dim;            /* cap */
     slong size;             /* hash table slots, a power of two */
     slong * slot;
+    unsigned char * cur;    /* m: the current face's key */
+    uint64_t curhash;
+    uint64_t * zob;         /* 3 m: the word of plane q and key byte b at
+                               3 q + b */
 }
 cell_list;
 
-static void
+static int
 cell_list_init(cell_list * L, slong m, slong cap)
 {
     slong i;
@@ -72,36 +84,68 @@ cell_list_init(cell_list * L, slong m, slong cap)
     L->m = m;
     L->cap = cap;
     L->count = 0;
-    L->key = flint_malloc((cap + 1) * m + 1);
+    L->key = malloc((size_t) cap * m + 1);
     L->hash = flint_malloc(sizeof(uint64_t) * (cap + 1));
     L->pt = _fmpz_vec_init(3 * (cap + 1));
     L->dim = flint_malloc(sizeof(slong) * (cap + 1));
     L->size = _wc_hash_size(2 * cap + 2);
     L->slot = flint_malloc(sizeof(slong) * L->size);
+    L->cur = flint_malloc(m + 1);
+    L->zob = flint_malloc(sizeof(uint64_t) * (3 * m + 1));
+    if (L->key == NULL || L->hash == NULL || L->dim == NULL
+        || L->slot == NULL || L->cur == NULL || L->zob == NULL)
+        return 0;
     for (i = 0; i < L->size; i++)
         L->slot[i] = -1;
+    L->curhash = 0;
+    for (i = 0; i < 3 * m; i++)
+        L->zob[i] = _wc_hash_mix64(UINT64_C(0x9e3779b97f4a7c15) * (i + 1));
+    for (i = 0; i < m; i++)
+    {
+        L->cur[i] = 1;
+        L->curhash ^= L->zob[3 * i + 1];
+    }
+    return 1;
 }
 
 static void
 cell_list_clear(cell_list * L)
 {
-    flint_free(L->key);
+    free(L->key);
     flint_free(L->hash);
     _fmpz_vec_clear(L->pt, 3 * (L->cap + 1));
     flint_free(L->dim);
     flint_free(L->slot);
+    flint_free(L->cur);
+    flint_free(L->zob);
 }
 
-/* Look the next key (L->key + count m) up: return -1 when it is new (it
-   is then added, with dimension d; its point is to be written to L->pt +
-   3 * index, the index being returned through *at), else the index of
-   the equal cell.  Never called with count > cap.  */
+/* Bring the current key up to the face F.  */
+static void
+cell_list_update(cell_list * L, const _wc_face_struct * F)
+{
+    slong i;
+
+    for (i = 0; i < F->nchanged; i++)
+    {
+        slong q = F->changed[i];
+        unsigned char b = (unsigned char) (F->sign[q] + 1);
+
+        L->curhash ^= L->zob[3 * q + L->cur[q]] ^ L->zob[3 * q + b];
+        L->cur[q] = b;
+    }
+}
+
+/* Look the current key up: return the index of the equal cell, or -1
+   when it is new (it is then added, with dimension d, at index *at; its
+   point is to be written to L->pt + 3 * *at), or -2 when there is no
+   room.  */
 static slong
 cell_list_add(cell_list * L, slong d, slong * at)
 {
     slong m = L->m, c = L->count, i;
-    const unsigned char * k = L->key + c * m;
-    uint64_t h = _wc_hash_bytes(k, m);
+    const unsigned char * k = L->cur;
+    uint64_t h = L->curhash;
 
     for (i = (slong) (h & (L->size - 1)); L->slot[i] >= 0;
          i = (i + 1) & (L->size - 1))
@@ -111,6 +155,9 @@ cell_list_add(cell_list * L, slong d, slong * at)
         if (L->hash[o] == h && memcmp(L->key + o * m, k, m) == 0)
             return o;
     }
+    if (c >= L->cap)
+        return -2;
+    memcpy(L->key + c * m, k, m);
     L->slot[i] = c;
     L->hash[c] = h;
     L->dim[c] = d;
@@ -126,11 +173,13 @@ typedef struct
 {
     cell_list * L;
     const fmpz_mat_struct * H;
-    slong * h64;            /* H as words when its entries are below
-                               2^SMALL_BITS, else NULL */
+    slong * h64;            /* H as words when WIDE and its entries are
+                               word fmpz, else NULL */
     slong hplane;           /* the plane hh is for */
     fmpz * hh;              /* h_q . h_p, m entries */
-    slong * hh64;           /* the same in words, with h64 */
+#if WIDE
+    wide * hh128;           /* the same in 128-bit words, with h64 */
+#endif
     slong sec;              /* the current sector's cell */
     int have_k;             /* k is set for it */
     fmpz_t k;
@@ -147,26 +196,26 @@ collect_init(collect * C, cell_list * L, const fmpz_mat_t H)
     C->L = L;
     C->H = H;
     C->h64 = NULL;
-#if FLINT_BITS == 64
+#if WIDE
     C->h64 = flint_malloc(sizeof(slong) * (3 * m + 1));
     for (i = 0; i < 3 * m && C->h64 != NULL; i++)
     {
         const fmpz * x = fmpz_mat_entry(H, i / 3, i % 3);
 
-        if (fmpz_bits(x) > SMALL_BITS)
+        if (COEFF_IS_MPZ(*x))
         {
             flint_free(C->h64);
             C->h64 = NULL;
         }
         else
-            C->h64[i] = fmpz_get_si(x);
+            C->h64[i] = *x;
     }
+    C->hh128 = flint_malloc(sizeof(wide) * (m + 1));
 #else
     (void) i;
 #endif
     C->hplane = -1;
     C->hh = _fmpz_vec_init(m + 1);
-    C->hh64 = flint_malloc(sizeof(slong) * (m + 1));
     C->sec = -1;
     C->have_k = 0;
     fmpz_init(C->k);
@@ -179,21 +228,51 @@ collect_clear(collect * C)
 {
     flint_free(C->h64);
     _fmpz_vec_clear(C->hh, C->L->m + 1);
-    flint_free(C->hh64);
+#if WIDE
+    flint_free(C->hh128);
+#endif
     fmpz_clear(C->k);
     fmpz_clear(C->t);
     fmpz_clear(C->a);
 }
 
+#if WIDE
+/* chamber_multiplier in 128-bit words: h64 set, mid's entries words.  */
+static int
+multiplier_wide(collect * C, slong p, const fmpz * mid,
+                const unsigned char * seckey)
+{
+    const slong * h = C->h64;
+    slong m = C->L->m, q;
+    wide x = mid[0], y = mid[1], z = mid[2], k = 1;
+
+    for (q = 0; q < m; q++)
+    {
+        wide d = h[3 * q] * x + h[3 * q + 1] * y + h[3 * q + 2] * z;
+        wide e = C->hh128[q];
+
+        if ((d > 0) - (d < 0) + 1 != seckey[q])
+            return 0;
+        d = d < 0 ? -d : d;
+        e = e < 0 ? -e : e;
+        /* d > 0 but on p (the sector's signs, checked); a division only
+           when |h_q . h_p| >= |h_q . mid| */
+        if (q != p && e >= d && e / d >= k)
+            k = e / d + 1;
+    }
+    fmpz_set_uiui(C->k, (ulong) (k >> 64), (ulong) k);
+    return 1;
+}
+#endif
+
 /* Check the signs seckey of the sector with point mid on plane p against
    the dot products there, and set C->k to a multiplier for the points of
-   the chambers beside it: k |h_q . mid| > |h_q . h_p| for every q != p.
-   Returns 0 on a mismatch.  */
+   the chambers beside it: the least k with k |h_q . mid| > |h_q . h_p|
+   for every q != p.  Returns 0 on a mismatch.  */
 static int
 chamber_multiplier(collect * C, slong p, const fmpz * mid,
                    const unsigned char * seckey)
 {
-    const slong * h64 = C->h64;
     slong m = C->L->m, q;
 
     if (C->hplane != p)
@@ -201,32 +280,20 @@ chamber_multiplier(collect * C, slong p, const fmpz * mid,
         for (q = 0; q < m; q++)
         {
             _fmpz_vec_dot(C->hh + q, WC_ROW(C->H, q), WC_ROW(C->H, p), 3);
-            if (h64 != NULL)
-                C->hh64[q] = fmpz_get_si(C->hh + q);
+#if WIDE
+            if (C->h64 != NULL)
+                C->hh128[q] = (wide) C->h64[3 * q] * C->h64[3 * p]
+                    + (wide) C->h64[3 * q + 1] * C->h64[3 * p + 1]
+                    + (wide) C->h64[3 * q + 2] * C->h64[3 * p + 2];
+#endif
         }
         C->hplane = p;
     }
-    if (h64 != NULL)
-    {
-        slong x = fmpz_get_si(mid), y = fmpz_get_si(mid + 1),
-            z = fmpz_get_si(mid + 2), k = 0;
-
-        for (q = 0; q < m; q++)
-        {
-            slong d = h64[3 * q] * x + h64[3 * q + 1] * y + h64[3 * q + 2] * z;
-            slong e = C->hh64[q];
-
-            if ((d > 0) - (d < 0) + 1 != seckey[q])
-                return 0;
-            if (q == p || e == 0)
-                continue;
-            e = FLINT_ABS(e) / FLINT_ABS(d);
-            if (e > k)
-                k = e;
-        }
-        fmpz_set_si(C->k, k + 1);
-        return 1;
-    }
+#if WIDE
+    if (C->h64 != NULL && !COEFF_IS_MPZ(mid[0]) && !COEFF_IS_MPZ(mid[1])
+        && !COEFF_IS_MPZ(mid[2]))
+        return multiplier_wide(C, p, mid, seckey);
+#endif
     fmpz_zero(C->k);
     for (q = 0; q < m; q++)
     {
@@ -234,7 +301,9 @@ chamber_multiplier(collect * C, slong p, const fmpz * mid,
 
         if (s + 1 != seckey[q])
             return 0;
-        if (q == p || fmpz_is_zero(C->hh + q))
+        /* a quotient below 1 cannot raise k: no division */
+        if (q == p || fmpz_is_zero(C->hh + q)
+            || fmpz_cmpabs(C->hh + q, C->a) < 0)
             continue;
         fmpz_abs(C->a, C->a);
         fmpz_abs(C->t, C->hh + q);
@@ -274,18 +343,15 @@ collect_face(void * data, const _wc_face_struct * F, wc_error_t err)
 {
     collect * C = data;
     cell_list * L = C->L;
-    slong m = L->m, q, at, zeros = 0;
-    unsigned char * key;
+    slong m = L->m, q, at = -1, zeros = 0, o;
 
-    if (L->count > L->cap)
-        goto euler;
-    key = L->key + L->count * m;
-    for (q = 0; q < m; q++)
-    {
-        key[q] = (unsigned char) (F->sign[q] + 1);
-        zeros += F->sign[q] == 0;
-    }
-    if (cell_list_add(L, F->dim, &at) >= 0)
+    cell_list_update(L, F);
+    o = cell_list_add(L, F->dim, &at);
+    if (o == -2)
+        return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                            "internal error: cells: more cells than Euler's "
+                            "relation allows");
+    if (o >= 0)
     {
         if (F->dim == 3)
             return WC_OK;       /* a chamber met before */
@@ -293,10 +359,10 @@ collect_face(void * data, const _wc_face_struct * F, wc_error_t err)
                             "internal error: cells: two cells of dimension "
                             "%d with the same signs", F->dim);
     }
-    if (at >= L->cap)
-        goto euler;
     if (F->dim == 2)
     {
+        for (q = 0; q < m; q++)
+            zeros += F->sign[q] == 0;
         if (zeros != 1 || F->sign[F->plane] != 0)
             return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                 "internal error: cells: an arc of plane %ld "
@@ -309,11 +375,6 @@ collect_face(void * data, const _wc_face_struct * F, wc_error_t err)
         return chamber_point(L->pt + 3 * at, C, F, err);
     _fmpz_vec_set(L->pt + 3 * at, F->point, 3);
     return WC_OK;
-
-euler:
-    return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                        "internal error: cells: more cells than Euler's "
-                        "relation allows");
 }
 
 /* ---------------------------------------------------------------------
@@ -336,7 +397,7 @@ wc_cells_clear(wc_cells_t A)
     fmpz_mat_clear(A->planes);
     fmpz_mat_clear(A->point);
     flint_free(A->dim);
-    flint_free(A->sign);
+    free(A->sign);
     wc_cells_init(A);
 }
 
@@ -403,13 +464,52 @@ key_ref_cmp(const void * p, const void * q)
     return memcmp(a->key, b->key, a->len);
 }
 
-/* A := the cells of L on the planes H (taken), sorted.  */
+/* Put the rows (m bytes each) of key into the order perm (row i
+   becomes the old row perm[i]), in place, with one spare row; perm is
+   used up (every entry set to -1).  */
 static void
-cells_sorted(wc_cells_t A, fmpz_mat_t H, const cell_list * L)
+permute_rows(unsigned char * key, slong m, slong * perm, slong n,
+             unsigned char * spare)
 {
-    slong m = L->m, total = L->count, i, j;
-    key_ref * ref = flint_malloc(sizeof(key_ref) * (total + 1));
+    slong i, j, k;
 
+    for (i = 0; i < n; i++)
+    {
+        if (perm[i] < 0 || perm[i] == i)
+        {
+            perm[i] = -1;
+            continue;
+        }
+        /* the cycle i <- perm[i] <- perm[perm[i]] ... */
+        memcpy(spare, key + i * m, m);
+        for (j = i; perm[j] != i; j = k)
+        {
+            k = perm[j];
+            memcpy(key + j * m, key + k * m, m);
+            perm[j] = -1;
+        }
+        memcpy(key + j * m, spare, m);
+        perm[j] = -1;
+    }
+}
+
+/* A := the cells of L on the planes H (taken), sorted; L's keys become
+   A's signs.  Returns 0 when out of memory.  */
+static int
+cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
+{
+    slong m = L->m, total = L->count, i;
+    key_ref * ref = flint_malloc(sizeof(key_ref) * (total + 1));
+    slong * perm = flint_malloc(sizeof(slong) * (total + 1));
+    unsigned char * spare = flint_malloc(m + 1);
+
+    if (ref == NULL || perm == NULL || spare == NULL)
+    {
+        flint_free(ref);
+        flint_free(perm);
+        flint_free(spare);
+        return 0;
+    }
     for (i = 0; i < total; i++)
     {
         ref[i].key = L->key + i * m;
@@ -424,17 +524,23 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, const cell_list * L)
     fmpz_mat_clear(A->point);
     fmpz_mat_init(A->point, total, 3);
     A->dim = flint_malloc(sizeof(slong) * (total + 1));
-    A->sign = flint_malloc(total * m + 1);
     for (i = 0; i < total; i++)
     {
         slong c = ref[i].i;
 
-        _fmpz_vec_set(WC_ROW(A->point, i), L->pt + 3 * c, 3);
+        _fmpz_vec_swap(WC_ROW(A->point, i), L->pt + 3 * c, 3);
         A->dim[i] = L->dim[c];
-        for (j = 0; j < m; j++)
-            A->sign[i * m + j] = (signed char) (L->key[c * m + j] - 1);
+        perm[i] = c;
     }
     flint_free(ref);
+    permute_rows(L->key, m, perm, total, spare);
+    for (i = 0; i < total * m; i++)
+        L->key[i]--;
+    A->sign = (signed char *) L->key;
+    L->key = NULL;
+    flint_free(perm);
+    flint_free(spare);
+    return 1;
 }
 
 int
@@ -467,7 +573,9 @@ wc_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
     }
     nrays = 2 * _wc_arrangement_nlines(R);
     total = 1 + nrays + nsec + (2 - nrays + nsec);  /* Euler, checked */
-    cell_list_init(&L, m, total);
+    if (!cell_list_init(&L, m, total) && status == WC_OK)
+        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                              "out of memory (%ld cells)", (long) total);
     collect_init(&C, &L, H);
     if (status == WC_OK)
         status = _wc_arrangement_walk(R, collect_face, &C, err);
@@ -477,8 +585,9 @@ wc_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
                               "fails: %ld rays - %ld sectors + %ld chambers "
                               "!= 2", (long) nrays, (long) nsec,
                               (long) (L.count - 1 - nrays - nsec));
-    if (status == WC_OK)
-        cells_sorted(A, H, &L);
+    if (status == WC_OK && !cells_sorted(A, H, &L))
+        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                              "out of memory (%ld cells)", (long) total);
     collect_clear(&C);
     cell_list_clear(&L);
     _wc_arrangement_clear(R);
