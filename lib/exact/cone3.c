@@ -170,28 +170,33 @@ one_face(wc_cone_t C, slong dim)
     C->empty = 0;
 }
 
+/* C := R^3 (space = 1: the identity as its lines) or { 0 } (the
+   identity as its equalities); one face of dimension 3 or 0.  */
+static void
+set_whole(wc_cone_t C, int space)
+{
+    fmpz_mat_struct * basis;
+
+    wc_cone_set_empty(C);
+    basis = space ? C->lines : C->eqs;
+    fmpz_mat_clear(basis);
+    fmpz_mat_init(basis, 3, 3);
+    fmpz_mat_one(basis);
+    C->dim = space ? 3 : 0;
+    C->lineality_dim = space ? 3 : 0;
+    one_face(C, C->dim);
+}
+
 void
 _wc_cone3_set_space(wc_cone_t C)
 {
-    wc_cone_set_empty(C);
-    fmpz_mat_clear(C->lines);
-    fmpz_mat_init(C->lines, 3, 3);
-    fmpz_mat_one(C->lines);
-    C->dim = 3;
-    C->lineality_dim = 3;
-    one_face(C, 3);
+    set_whole(C, 1);
 }
 
 void
 _wc_cone3_set_origin(wc_cone_t C)
 {
-    wc_cone_set_empty(C);
-    fmpz_mat_clear(C->eqs);
-    fmpz_mat_init(C->eqs, 3, 3);
-    fmpz_mat_one(C->eqs);
-    C->dim = 0;
-    C->lineality_dim = 0;
-    one_face(C, 0);
+    set_whole(C, 0);
 }
 
 static int
