@@ -426,6 +426,44 @@ set_w(wc_cone_t W, int * done, ws_struct * w, int kind, int apex)
     return status;
 }
 
+/* A := the rows x[0..k) (stride 3, or the pointers X when not NULL)
+   times M^-1, up to positive factors: (mb x0, mb x1, ma x2).  */
+static void
+rows_times_minv(fmpq_mat_t A, const fmpz * x, const fmpz ** X, slong k,
+                const ws_struct * w)
+{
+    slong i;
+
+    fmpq_mat_init(A, k, 3);
+    for (i = 0; i < k; i++)
+    {
+        const fmpz * r = X != NULL ? X[i] : x + 3 * i;
+
+        fmpz_mul(fmpq_mat_entry_num(A, i, 0), w->mb, r + 0);
+        fmpz_mul(fmpq_mat_entry_num(A, i, 1), w->mb, r + 1);
+        fmpz_mul(fmpq_mat_entry_num(A, i, 2), w->ma, r + 2);
+    }
+}
+
+/* No friction edges: W = M V_x = { g : E M^-1 g = 0, H M^-1 g <= 0,
+   S M^-1 g < 0 }, one conversion (the general one) instead of V_x's and
+   then the image's.  */
+static int
+image_by_hrep(wc_cone_t W, const ws_struct * w, wc_error_t err)
+{
+    fmpq_mat_t E, H, S;
+    int status;
+
+    rows_times_minv(E, NULL, w->E, w->ne, w);
+    rows_times_minv(H, w->H, NULL, w->nh, w);
+    rows_times_minv(S, w->S, NULL, w->ns, w);
+    status = wc_cone_set_hrep(W, E, H, S, err);
+    fmpq_mat_clear(E);
+    fmpq_mat_clear(H);
+    fmpq_mat_clear(S);
+    return status;
+}
+
 int
 _wc_wrench_cone_direct3(wc_cone_t W, int * done, const wc_problem_t P,
                         const char * mode, wc_error_t err)
@@ -434,7 +472,7 @@ _wc_wrench_cone_direct3(wc_cone_t W, int * done, const wc_problem_t P,
     _wc_fan3_t FV;
     slong n = P->n, i, len = 30 * n + 23;
     fmpz * z = NULL, * u;
-    int kind, apex, status = WC_OK;
+    int kind, apex, status = WC_OK, err_set = 0;
 
     *done = 0;
     wc_cone_set_empty(W);
@@ -461,19 +499,26 @@ _wc_wrench_cone_direct3(wc_cone_t W, int * done, const wc_problem_t P,
     fmpz_init(w.ma);
     fmpz_init(w.mb);
     _wc_fan3_init(FV);
+    /* M = diag(m, m, I): M x is a positive multiple of
+       (m_num I_den x0, m_num I_den x1, I_num m_den x2).  */
+    fmpz_mul(w.ma, fmpq_numref(P->mass), fmpq_denref(P->inertia));
+    fmpz_mul(w.mb, fmpq_numref(P->inertia), fmpq_denref(P->mass));
     build(&w, P, mode);
     kind = settle_v(&w, FV, u, &apex);
     if (kind < 0)
         status = WC_EINTERNAL;
+    if (kind == V_OTHER && w.nq == 0)
+    {
+        *done = 1;
+        status = image_by_hrep(W, &w, err);
+        err_set = 1;
+        goto finish;
+    }
     if (kind < 0 || kind == V_OTHER)
         goto finish;
     *done = 1;
     if (kind == V_EMPTY)
         goto finish;
-    /* M = diag(m, m, I): M x is a positive multiple of
-       (m_num I_den x0, m_num I_den x1, I_num m_den x2).  */
-    fmpz_mul(w.ma, fmpq_numref(P->mass), fmpq_denref(P->inertia));
-    fmpz_mul(w.mb, fmpq_numref(P->inertia), fmpq_denref(P->mass));
     w.ng = 0;
     if (kind == V_RAY || kind == V_LINE)
         put_image(&w, u, 1);
@@ -498,9 +543,10 @@ cleanup:
     {
         *done = 1;
         wc_cone_set_empty(W);
-        return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                            "internal error: out of memory in the direct "
-                            "route");
+        return err_set ? status
+            : wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                           "internal error: out of memory in the direct "
+                           "route");
     }
     if (!*done)
         wc_cone_set_empty(W);
