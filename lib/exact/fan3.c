@@ -148,41 +148,65 @@ inner(fan_ctx * c, slong x, slong y, fmpz * w)
     return dot_sgn(w, c->qx + 3 * y, c->t) > 0;
 }
 
-/* 1 when a makes a larger angle with q than b.  */
-static int
-farther(fan_ctx * c, const fmpz * q, slong a, slong b)
+/* The generator of x[0..p) that makes the largest angle with q (the first
+   of equals): the largest -(q . a) / |a| when some q . a < 0, else the
+   smallest (q . a) / |a| over the smallest sign; compared as
+   (q . a)^2 |b|^2 against (q . b)^2 |a|^2, with the best's two values
+   kept.  */
+static slong
+farthest(fan_ctx * c, const fmpz * q, const slong * x, slong p)
 {
-    fmpz_t qa, qb, na, nb;
-    int sa, sb, r;
+    fmpz_t qa, na, qs, ns, l, r;
+    slong i, s = 0;
+    int sa, ss;
 
     fmpz_init(qa);
-    fmpz_init(qb);
     fmpz_init(na);
-    fmpz_init(nb);
-    _fmpz_vec_dot(qa, q, GV(c, a), 3);
-    _fmpz_vec_dot(qb, q, GV(c, b), 3);
-    sa = fmpz_sgn(qa);
-    sb = fmpz_sgn(qb);
-    if (sa != sb)
-        r = sa < sb;
-    else if (sa == 0)
-        r = 0;
-    else
+    fmpz_init(qs);
+    fmpz_init(ns);
+    fmpz_init(l);
+    fmpz_init(r);
+    _fmpz_vec_dot(qs, q, GV(c, x[0]), 3);
+    _fmpz_vec_dot(ns, GV(c, x[0]), GV(c, x[0]), 3);
+    ss = fmpz_sgn(qs);
+    for (i = 1; i < p; i++)
     {
-        /* Compare qa^2 |b|^2 with qb^2 |a|^2.  */
-        _fmpz_vec_dot(na, GV(c, a), GV(c, a), 3);
-        _fmpz_vec_dot(nb, GV(c, b), GV(c, b), 3);
-        fmpz_mul(qa, qa, qa);
-        fmpz_mul(qa, qa, nb);
-        fmpz_mul(qb, qb, qb);
-        fmpz_mul(qb, qb, na);
-        r = sa > 0 ? fmpz_cmp(qa, qb) < 0 : fmpz_cmp(qa, qb) > 0;
+        int far, have = 0;
+
+        _fmpz_vec_dot(qa, q, GV(c, x[i]), 3);
+        sa = fmpz_sgn(qa);
+        if (sa != ss)
+            far = sa < ss;
+        else if (sa == 0)
+            far = 0;
+        else
+        {
+            have = 1;
+            _fmpz_vec_dot(na, GV(c, x[i]), GV(c, x[i]), 3);
+            fmpz_mul(l, qa, qa);
+            fmpz_mul(l, l, ns);
+            fmpz_mul(r, qs, qs);
+            fmpz_mul(r, r, na);
+            far = sa > 0 ? fmpz_cmp(l, r) < 0 : fmpz_cmp(l, r) > 0;
+        }
+        if (far)
+        {
+            s = i;
+            ss = sa;
+            fmpz_swap(qs, qa);
+            if (have)
+                fmpz_swap(ns, na);
+            else
+                _fmpz_vec_dot(ns, GV(c, x[i]), GV(c, x[i]), 3);
+        }
     }
     fmpz_clear(qa);
-    fmpz_clear(qb);
     fmpz_clear(na);
-    fmpz_clear(nb);
-    return r;
+    fmpz_clear(qs);
+    fmpz_clear(ns);
+    fmpz_clear(l);
+    fmpz_clear(r);
+    return s;
 }
 
 /* 1 when the k generators span R^3 (q = their sum is 0 here).  */
@@ -370,9 +394,7 @@ fan_axis(_wc_fan3_t F, fan_ctx * c, const fmpz * q, slong k, slong * x,
     p = outermost(c, x, p, w);
     if (p < 3)
         goto done;
-    for (s = 0, i = 1; i < p; i++)
-        if (farther(c, q, x[i], x[s]))
-            s = i;
+    s = farthest(c, q, x, p);
     m = scan(c, q, x, p, s, z);
     if (m >= 3 && certify(F, c, z, m, k, w))
         res = WC_FAN3_POINTED;
