@@ -16,7 +16,9 @@
    and zero friction, and for random and uniform modes: the fast path,
    where it answers, and wc_wrench_cone_direct give the cone of the
    general route, field for field and byte for byte in JSON, with the same
-   status.  The fast path must answer for at least a quarter of the cones
+   status.  _wc_cone3_set_line (the canonical line the fast path writes
+   for the modes of s letters around the part) is compared with the
+   general conversion of that line.  The fast path must answer for at least a quarter of the cones
    (it answers about half of them) or the test fails.  */
 
 #include <config.h>
@@ -28,6 +30,7 @@
 #include "wrenchcone.h"
 #include "testutil.h"
 #include "analysis/direct3.h"
+#include "exact/cone3.h"
 
 static char *
 json_of(const wc_cone_t W)
@@ -167,6 +170,50 @@ line_problem(wc_problem_t P, slong n)
     }
 }
 
+/* _wc_cone3_set_line against the general conversion of one line, for
+   vectors with zero, negative and non-coprime entries.  */
+static void
+check_line(void)
+{
+    fmpz v[3];
+    fmpq_mat_t L;
+    wc_cone_t A, B;
+    wc_error_t err;
+    slong j;
+
+    fmpq_mat_init(L, 1, 3);
+    wc_cone_init(A, 3);
+    wc_cone_init(B, 3);
+    wc_error_init(err);
+    for (j = 0; j < 3; j++)
+    {
+        fmpz_init(v + j);
+        fmpz_set_si(v + j, wctest_chance(1, 3) ? 0
+                    : 6 * wctest_randint(-4, 4) + wctest_randint(-2, 2));
+    }
+    if (fmpz_is_zero(v + 0) && fmpz_is_zero(v + 1) && fmpz_is_zero(v + 2))
+        fmpz_set_si(v + wctest_randint(0, 2), -12);
+    for (j = 0; j < 3; j++)
+        fmpq_set_fmpz(fmpq_mat_entry(L, 0, j), v + j);
+    _wc_cone3_set_line(A, v);
+    if (wc_cone_set_generators(B, NULL, L, err) != WC_OK)
+        wctest_fail("wc_cone_set_generators: %s", err->message);
+    if (!wc_cone_equal(A, B))
+    {
+        char * ja = json_of(A), * jb = json_of(B);
+
+        wctest_fail("the line (%ld, %ld, %ld):\n%s\n%s",
+                    (long) fmpz_get_si(v + 0), (long) fmpz_get_si(v + 1),
+                    (long) fmpz_get_si(v + 2), ja, jb);
+    }
+    for (j = 0; j < 3; j++)
+        fmpz_clear(v + j);
+    fmpq_mat_clear(L);
+    wc_cone_clear(A);
+    wc_cone_clear(B);
+    wc_error_clear(err);
+}
+
 int
 main(void)
 {
@@ -198,6 +245,7 @@ main(void)
         else
             uniform_mode(mode, P, letters[wctest_randint(0, 4)]);
         fast += check(P, mode);
+        check_line();
         total++;
         wc_problem_clear(P);
     }

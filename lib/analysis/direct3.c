@@ -371,6 +371,67 @@ faces_holding(wc_cone_t W, const fmpz * y, fmpz_t t)
     return 1;
 }
 
+/* 1 when the rows H have rank 2 and are in no closed half-plane of their
+   plane: then pos(H) is that plane, V_x its normal line, and u := the
+   normal; 0 for other rows of rank 1 or 2, -1 for rank 3.  Around u, A is the row farthest counterclockwise from the
+   first row h, B the farthest clockwise; the rows fill the plane iff
+   -h is a row and both sides are used, or the angle from A on to B is
+   below a half-turn.  */
+static int
+plane_of_rows(ws_struct * w, fmpz * u)
+{
+    const fmpz * h = w->H, * A = NULL, * B = NULL;
+    fmpz * c = _fmpz_vec_init(3), * t = SCRATCH(w);
+    slong i;
+    int opp = 0, r = 0, s;
+
+    for (i = 1; i < w->nh && _fmpz_vec_is_zero(u, 3); i++)
+        _wc_zvec3_cross(u, h, w->H + 3 * i);
+    if (_fmpz_vec_is_zero(u, 3))
+        goto done;
+    for (i = 0; i < w->nh; i++)
+        if (_wc_zvec3_dot_sgn(u, w->H + 3 * i, t) != 0)
+        {
+            r = -1;
+            goto done;
+        }
+    primitive(u, t);
+    for (i = 1; i < w->nh; i++)
+    {
+        const fmpz * x = w->H + 3 * i;
+
+        _wc_zvec3_cross(c, h, x);
+        s = _wc_zvec3_dot_sgn(u, c, t);
+        if (s == 0)
+            opp |= _wc_zvec3_dot_sgn(h, x, t) < 0;
+        else if (s > 0 && A != NULL)
+        {
+            _wc_zvec3_cross(c, A, x);
+            if (_wc_zvec3_dot_sgn(u, c, t) > 0)
+                A = x;
+        }
+        else if (s < 0 && B != NULL)
+        {
+            _wc_zvec3_cross(c, B, x);
+            if (_wc_zvec3_dot_sgn(u, c, t) < 0)
+                B = x;
+        }
+        else if (s > 0)
+            A = x;
+        else
+            B = x;
+    }
+    if (A != NULL && B != NULL)
+    {
+        _wc_zvec3_cross(c, A, B);
+        r = opp || _wc_zvec3_dot_sgn(u, c, t) > 0;
+    }
+
+done:
+    _fmpz_vec_clear(c, 3);
+    return r;
+}
+
 /* V_x from the rank of the equalities; V_POLAR sets FV (the fan of H,
    whose facet normals are V_x's rays).  */
 static int
@@ -386,6 +447,9 @@ settle_v(ws_struct * w, _wc_fan3_t FV, fmpz * u, int * apex)
         return on_line(w, u, apex);
     if (r == 1 || w->ns > 0 || w->nh == 0)
         return V_OTHER;
+    _fmpz_vec_zero(u, 3);
+    if ((r = plane_of_rows(w, u)) >= 0)
+        return r ? V_LINE : V_OTHER;
     k = distinct(w->U, w->H, w->nh, w->idx);
     r = _wc_fan3(FV, w->U, k);
     if (r == WC_FAN3_NOMEM)
@@ -407,6 +471,11 @@ set_w(wc_cone_t W, int * done, ws_struct * w, int kind, int apex)
     if (k == 0)
     {
         _wc_cone3_set_origin(W);
+        return WC_OK;
+    }
+    if (k == 2 && kind == V_LINE)       /* M V_x, no friction edges */
+    {
+        _wc_cone3_set_line(W, w->G);
         return WC_OK;
     }
     _wc_fan3_init(F);
