@@ -86,16 +86,18 @@ common_den(fmpz * X, fmpz_t D, const fmpq * a, fmpz_t g)
     fmpz_mul(X + 1, fmpq_numref(a + 1), g);
 }
 
-/* c := the primitive column of J for the direction D (a positive integer
-   multiple of d) at r = (R0, R1) / R2, R2 > 0.  */
+/* c := a positive integer multiple of the column of J for the direction
+   D (a positive integer multiple of d) at r = (R0, R1) / R2, R2 > 0;
+   primitive when prim is set (equality and strict rows need not be).  */
 static void
-column(fmpz * c, const fmpz * D, const fmpz * R, fmpz_t g)
+column(fmpz * c, const fmpz * D, const fmpz * R, fmpz_t g, int prim)
 {
     fmpz_mul(c + 0, R + 2, D + 0);
     fmpz_mul(c + 1, R + 2, D + 1);
     fmpz_mul(c + 2, R + 0, D + 1);
     fmpz_submul(c + 2, R + 1, D + 0);
-    primitive(c, g);
+    if (prim)
+        primitive(c, g);
 }
 
 /* Q gets -column(n + sign mu t) for the normal N (integer).  */
@@ -117,7 +119,7 @@ edge(ws_struct * w, const fmpz * N, const fmpq_t mu, int sign,
         fmpz_addmul(D + 0, fmpq_numref(mu), N + 1);
         fmpz_submul(D + 1, fmpq_numref(mu), N + 0);
     }
-    column(c, D, R, SCRATCH(w));
+    column(c, D, R, SCRATCH(w), 1);
     _fmpz_vec_neg(c, c, 3);
 }
 
@@ -162,13 +164,13 @@ build(ws_struct * w, const wc_problem_t P, const char * mode)
         fmpz_submul(R + 1, O + 1, R + 2);
         fmpz_mul(R + 2, R + 2, Do);
         common_den(N, Dn, f->normal, g);
-        column(jn, N, R, g);
+        column(jn, N, R, g, x == 's');
         if (x == 'l' || x == 'r' || x == 'n')
         {
             fmpz_neg(N + 2, N + 1);             /* t = (-n_y, n_x) */
             fmpz_swap(N + 1, N + 2);
             fmpz_swap(N + 0, N + 1);
-            column(jt, N, R, g);
+            column(jt, N, R, g, 0);
             fmpz_swap(N + 0, N + 1);            /* N back to the normal */
             fmpz_swap(N + 1, N + 2);
         }
@@ -225,12 +227,12 @@ eq_rank(ws_struct * w, fmpz * u)
         {
             _wc_zvec3_cross(u, e1, x);
             r = _fmpz_vec_is_zero(u, 3) ? 1 : 2;
+            if (r == 2)
+                primitive(u, SCRATCH(w));
         }
         else if (_wc_zvec3_dot_sgn(u, x, SCRATCH(w)) != 0)
             r = 3;
     }
-    if (r == 2)
-        primitive(u, SCRATCH(w));
     return r;
 }
 
