@@ -46,21 +46,9 @@ _wc_zqvec3_dot(fmpq_t r, const fmpz * h, const fmpq * p)
     fmpq_clear(t);
 }
 
-/* Small entries (no GMP integer behind them): in 128-bit integers,
-   exactly (each product is below 2^124, the sum below 2^126).  */
 int
 _wc_zvec3_dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t)
 {
-#ifdef __SIZEOF_INT128__
-    if (!COEFF_IS_MPZ(a[0]) && !COEFF_IS_MPZ(a[1]) && !COEFF_IS_MPZ(a[2])
-        && !COEFF_IS_MPZ(b[0]) && !COEFF_IS_MPZ(b[1]) && !COEFF_IS_MPZ(b[2]))
-    {
-        __int128 s = (__int128) a[0] * b[0] + (__int128) a[1] * b[1]
-            + (__int128) a[2] * b[2];
-
-        return (s > 0) - (s < 0);
-    }
-#endif
     fmpz_mul(t, a + 0, b + 0);
     fmpz_addmul(t, a + 1, b + 1);
     fmpz_addmul(t, a + 2, b + 2);
