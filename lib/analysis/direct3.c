@@ -16,13 +16,15 @@
    V_x = { nudot : E nudot = 0, H nudot <= 0, S nudot < 0 } is settled by
    the rank of E: 3, the origin; 2, a subset of the line through u = the
    cross product of two independent rows (the signs of H u and S u say
-   which); 0 with no strict rows, the polar of the fan of H.  Then W is
+   which); 0 with no strict rows, the polar of the fan of H, or the
+   normal line of H's plane when H has rank 2 and fills it.  Then W is
    the fan of M V_x's generators and the friction edges, written directly
    in canonical form; when V_x is a ray whose apex is excluded (strict
    rows), a face of W is included iff it contains M times that ray (the
-   rule of wc_cone_image_sum).  Everything else -- equalities of rank 1,
-   strict rows without equalities, cones the fan does not settle -- is
-   left to the general route.  */
+   rule of wc_cone_image_sum).  Without friction edges, any other V_x
+   gives W = M V_x from the rows times M^-1 in one general conversion.
+   Everything else -- equalities of rank 1 with friction edges, cones the
+   fan does not settle -- is left to the general route.  */
 
 #include <config.h>
 

@@ -7,12 +7,14 @@
 
    Not installed.  The direct route (wrench.h) builds J, M and the
    friction edges as rational matrices and hands them to the general cone
-   operations; this path builds primitive integer rows and generators per
-   fixel instead and goes straight to the 3-D fan (fan3.h) when V_x is
-   the origin, a ray, a line (equalities of rank 2 or 3) or, with no
-   equalities and no strict rows, a pointed cone; it gives up on every
-   other case, and the general route answers.  Both give the same
-   canonical cone (tests/t-direct3.c checks it on random problems).  */
+   operations; this path builds integer rows and generators per fixel
+   instead and goes straight to the 3-D fan (fan3.h) when V_x is the
+   origin, a ray or a line (equalities of rank 2 or 3) or, with no
+   equalities and no strict rows, a pointed cone or the normal line of a
+   plane its rows fill; without friction edges it converts M V_x from one
+   H-representation.  It gives up on every other case, and the general
+   route answers.  Both give the same canonical cone (tests/t-direct3.c
+   checks it on random and degenerate problems).  */
 
 #ifndef WC_ANALYSIS_DIRECT3_H
 #define WC_ANALYSIS_DIRECT3_H
