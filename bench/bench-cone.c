@@ -18,7 +18,6 @@
 
 #include <config.h>
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -168,7 +167,7 @@ main(int argc, char ** argv)
     slong maxn = argc > 1 ? atol(argv[1]) : 8, n, m;
     double budget = argc > 2 ? atof(argv[2]) : 0.2, ratio6 = 0;
     static const slong big[] = { 12, 25, 50, 100, 200, 500, 1000 };
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    double xs[sizeof big / sizeof big[0]], ys[sizeof big / sizeof big[0]];
     slong np = 0;
     char * mode = malloc(1001);
 
@@ -223,19 +222,14 @@ main(int argc, char ** argv)
                1e3 * td, "-", "-", ed ? "empty" : "nonempty");
         if (n >= 50)
         {
-            double x = log((double) n), y = log(td);
-
-            sx += x;
-            sy += y;
-            sxx += x * x;
-            sxy += x * y;
-            np++;
+            xs[np] = (double) n;
+            ys[np++] = td;
         }
         wc_problem_clear(P);
     }
     printf("growth exponent of the direct route, n..n, n = 50..1000 "
            "(least-squares slope of log time vs log n): %.2f\n",
-           (np * sxy - sx * sy) / (np * sxx - sx * sx));
+           wcbench_slope(xs, ys, np));
     {
         /* Degenerate: 200 collinear fixels with parallel normals, so that
            many generators of -J D_x are coplanar.  */

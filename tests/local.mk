@@ -23,6 +23,7 @@ C_TESTS = \
 	tests/t-cone \
 	tests/t-hull3 \
 	tests/t-routes \
+	tests/t-direct3 \
 	tests/t-modes \
 	tests/t-modeswalk \
 	tests/t-verify \

@@ -16,6 +16,7 @@
 #include "exact/cone.h"
 #include "exact/lp.h"
 #include "analysis/wrench.h"
+#include "analysis/direct3.h"
 
 /* Set row (*r)++ of A (allocated with room) to column col of J, times
    sign.  */
@@ -36,6 +37,30 @@ append_row(fmpq_mat_t A, slong * r, const fmpq_mat_t J, slong col, int sign)
 int
 wc_wrench_cone_direct(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
                       const char * mode, wc_error_t err)
+{
+    int status, done = 0;
+
+    /* Integer rows and generators straight from the model when V_x is
+       simple (direct3.c); the general route below otherwise, and always
+       for a trace, which shows its rational matrices.  */
+    if (trace == NULL && W->d == 3)
+    {
+        if ((status = wc_mode_check(P, mode, WC_TABLE_CONE, err)) != WC_OK)
+        {
+            wc_cone_set_empty(W);
+            return status;
+        }
+        status = _wc_wrench_cone_direct3(W, &done, P, mode, err);
+        if (status != WC_OK || done)
+            return status;
+    }
+    return _wc_wrench_cone_direct_general(W, trace, P, mode, err);
+}
+
+int
+_wc_wrench_cone_direct_general(wc_cone_t W, wc_trace_t trace,
+                               const wc_problem_t P, const char * mode,
+                               wc_error_t err)
 {
     slong n = P->n, i, j, q = 0, re = 0, rl = 0, rt = 0;
     fmpq_mat_t J, M, Eq, Le, Lt, Q, Vr;

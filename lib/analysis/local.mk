@@ -5,6 +5,7 @@
 lib_libwc_la_SOURCES += \
 	lib/analysis/wrench.c \
 	lib/analysis/direct.c \
+	lib/analysis/direct3.c \
 	lib/analysis/paper.c \
 	lib/analysis/trace.c \
 	lib/analysis/kinematics.c \
@@ -32,6 +33,7 @@ wcanalysis_HEADERS = \
 	lib/analysis/stability.h \
 	lib/analysis/plan.h
 noinst_HEADERS += \
+	lib/analysis/direct3.h \
 	lib/analysis/planparts.h \
 	lib/analysis/modeswalk.h \
 	lib/analysis/stabmodel.h \

@@ -170,28 +170,110 @@ one_face(wc_cone_t C, slong dim)
     C->empty = 0;
 }
 
+/* C := R^3 (space = 1: the identity as its lines) or { 0 } (the
+   identity as its equalities); one face of dimension 3 or 0.  */
+static void
+set_whole(wc_cone_t C, int space)
+{
+    fmpz_mat_struct * basis;
+
+    wc_cone_set_empty(C);
+    basis = space ? C->lines : C->eqs;
+    fmpz_mat_clear(basis);
+    fmpz_mat_init(basis, 3, 3);
+    fmpz_mat_one(basis);
+    C->dim = space ? 3 : 0;
+    C->lineality_dim = space ? 3 : 0;
+    one_face(C, C->dim);
+}
+
 void
 _wc_cone3_set_space(wc_cone_t C)
 {
-    wc_cone_set_empty(C);
-    fmpz_mat_clear(C->lines);
-    fmpz_mat_init(C->lines, 3, 3);
-    fmpz_mat_one(C->lines);
-    C->dim = 3;
-    C->lineality_dim = 3;
-    one_face(C, 3);
+    set_whole(C, 1);
 }
 
 void
 _wc_cone3_set_origin(wc_cone_t C)
 {
+    set_whole(C, 0);
+}
+
+/* Row i of A := (a, b, c) made primitive.  */
+static void
+set_row(fmpz_mat_t A, slong i, const fmpz_t a, const fmpz_t b,
+        const fmpz_t c)
+{
+    fmpz * r = WC_ROW(A, i);
+    fmpz_t g;
+
+    fmpz_set(r + 0, a);
+    fmpz_set(r + 1, b);
+    fmpz_set(r + 2, c);
+    fmpz_init(g);
+    _fmpz_vec_content(g, r, 3);
+    if (!fmpz_is_one(g))
+        _fmpz_vec_scalar_divexact_fmpz(r, r, 3, g);
+    fmpz_clear(g);
+}
+
+void
+_wc_cone3_set_line(wc_cone_t C, const fmpz * v)
+{
+    fmpz * l;
+    fmpz_t zero, one, t, z;
+    slong j;
+    int s;
+
     wc_cone_set_empty(C);
+    fmpz_init(zero);
+    fmpz_init_set_ui(one, 1);
+    fmpz_init(t);
+    fmpz_init(z);
+    /* The line: v made primitive, its leading entry positive (the RREF
+       row made primitive).  */
+    fmpz_mat_clear(C->lines);
+    fmpz_mat_init(C->lines, 1, 3);
+    l = WC_ROW(C->lines, 0);
+    set_row(C->lines, 0, v + 0, v + 1, v + 2);
+    for (j = 0; fmpz_is_zero(l + j); j++)
+        ;
+    if (fmpz_sgn(l + j) < 0)
+        _fmpz_vec_neg(l, l, 3);
+    /* The equalities: the RREF basis of the plane l . x = 0, rows made
+       primitive.  l_2 != 0: pivots 0 and 1, rows (1, 0, -l_0 / l_2) and
+       (0, 1, -l_1 / l_2), times |l_2|; l_2 = 0 != l_1: pivots 0 and 2,
+       (1, -l_0 / l_1, 0) times |l_1| and (0, 0, 1); else (0, 1, 0) and
+       (0, 0, 1).  */
     fmpz_mat_clear(C->eqs);
-    fmpz_mat_init(C->eqs, 3, 3);
-    fmpz_mat_one(C->eqs);
-    C->dim = 0;
-    C->lineality_dim = 0;
-    one_face(C, 0);
+    fmpz_mat_init(C->eqs, 2, 3);
+    j = !fmpz_is_zero(l + 2) ? 2 : 1;
+    s = fmpz_sgn(l + j);
+    fmpz_abs(t, l + j);
+    if (s != 0)
+    {
+        fmpz_mul_si(z, l + 0, -s);
+        if (j == 2)
+            set_row(C->eqs, 0, t, zero, z);
+        else
+            set_row(C->eqs, 0, t, z, zero);
+    }
+    else
+        set_row(C->eqs, 0, zero, one, zero);
+    if (j == 2)
+    {
+        fmpz_mul_si(z, l + 1, -s);
+        set_row(C->eqs, 1, zero, t, z);
+    }
+    else
+        set_row(C->eqs, 1, zero, zero, one);
+    fmpz_clear(zero);
+    fmpz_clear(one);
+    fmpz_clear(t);
+    fmpz_clear(z);
+    C->dim = 1;
+    C->lineality_dim = 1;
+    one_face(C, 1);
 }
 
 static int

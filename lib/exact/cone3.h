@@ -25,6 +25,9 @@ int _wc_cone3_set_fan(wc_cone_t C, const _wc_fan3_t F, int polar);
 void _wc_cone3_set_space(wc_cone_t C);
 void _wc_cone3_set_origin(wc_cone_t C);
 
+/* C := the line through v (3 entries, not all zero).  */
+void _wc_cone3_set_line(wc_cone_t C, const fmpz * v);
+
 /* The fast routes of cone.c for d = 3: C := pos(rays) + span(lines), or
    C := { x : eqs x = 0, H x <= 0 }, when the cone is pointed of
    dimension 3, R^3 or (H-representation) the origin; *done is then set

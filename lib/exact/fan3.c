@@ -31,6 +31,9 @@ typedef struct
 {
     const fmpz * G;
     fmpz * qx;                  /* 3k: q x g_i */
+#ifdef __SIZEOF_INT128__
+    __int128 * qw;              /* the same in 128 bits, or NULL */
+#endif
     unsigned char * half;       /* 0: angle in [0, pi), 1: [pi, 2 pi) */
     fmpz_t t, u;
 }
@@ -107,13 +110,64 @@ det_sgn(const fmpz * a, const fmpz * b, const fmpz * c, fmpz_t t, fmpz_t u)
     return fmpz_sgn(t);
 }
 
+/* sign (q x g_a) . g_b, from the 128-bit copy when there is one.  */
+static int
+qx_sgn(fan_ctx * c, slong a, slong b)
+{
+#ifdef __SIZEOF_INT128__
+    if (c->qw != NULL)
+    {
+        const __int128 * x = c->qw + 3 * a;
+        const fmpz * g = GV(c, b);
+        __int128 s = x[0] * g[0] + x[1] * g[1] + x[2] * g[2];
+
+        return (s > 0) - (s < 0);
+    }
+#endif
+    return dot_sgn(c->qx + 3 * a, GV(c, b), c->t);
+}
+
+/* The 128-bit copy of q x g_i when every entry of q has at most 62 bits,
+   every generator entry at most 62, and bits(q) + 2 bits(g) <= 122: then
+   each entry of q x g is below 2^123 and each (q x g_a) . g_b below
+   2^125.  Returns 0 when out of memory.  */
+static int
+set_qw(fan_ctx * c, const fmpz * q, slong k)
+{
+#ifdef __SIZEOF_INT128__
+    flint_bitcnt_t bq = 0, bg = 0;
+    slong i, j;
+
+    c->qw = NULL;
+    for (j = 0; j < 3; j++)
+        bq = FLINT_MAX(bq, fmpz_bits(q + j));
+    for (i = 0; i < 3 * k && bg <= 62; i++)
+        bg = FLINT_MAX(bg, fmpz_bits(c->G + i));
+    if (bq > 62 || bg > 62 || bq + 2 * bg > 122)
+        return 1;
+    c->qw = malloc(sizeof(__int128) * 3 * k);
+    if (c->qw == NULL)
+        return 0;
+    for (i = 0; i < k; i++)
+    {
+        const fmpz * g = GV(c, i);
+        __int128 * x = c->qw + 3 * i;
+
+        x[0] = (__int128) q[1] * g[2] - (__int128) q[2] * g[1];
+        x[1] = (__int128) q[2] * g[0] - (__int128) q[0] * g[2];
+        x[2] = (__int128) q[0] * g[1] - (__int128) q[1] * g[0];
+    }
+#endif
+    return 1;
+}
+
 /* Counterclockwise order around q.  */
 static int
 ang_cmp(fan_ctx * c, slong a, slong b)
 {
     if (c->half[a] != c->half[b])
         return c->half[a] < c->half[b] ? -1 : 1;
-    return -dot_sgn(c->qx + 3 * a, GV(c, b), c->t);
+    return -qx_sgn(c, a, b);
 }
 
 /* Stable bottom-up merge sort of x[0..n) by ang_cmp; tmp has n slots.  */
@@ -148,41 +202,65 @@ inner(fan_ctx * c, slong x, slong y, fmpz * w)
     return dot_sgn(w, c->qx + 3 * y, c->t) > 0;
 }
 
-/* 1 when a makes a larger angle with q than b.  */
-static int
-farther(fan_ctx * c, const fmpz * q, slong a, slong b)
+/* The generator of x[0..p) that makes the largest angle with q (the first
+   of equals): the largest -(q . a) / |a| when some q . a < 0, else the
+   smallest (q . a) / |a| over the smallest sign; compared as
+   (q . a)^2 |b|^2 against (q . b)^2 |a|^2, with the best's two values
+   kept.  */
+static slong
+farthest(fan_ctx * c, const fmpz * q, const slong * x, slong p)
 {
-    fmpz_t qa, qb, na, nb;
-    int sa, sb, r;
+    fmpz_t qa, na, qs, ns, l, r;
+    slong i, s = 0;
+    int sa, ss;
 
     fmpz_init(qa);
-    fmpz_init(qb);
     fmpz_init(na);
-    fmpz_init(nb);
-    _fmpz_vec_dot(qa, q, GV(c, a), 3);
-    _fmpz_vec_dot(qb, q, GV(c, b), 3);
-    sa = fmpz_sgn(qa);
-    sb = fmpz_sgn(qb);
-    if (sa != sb)
-        r = sa < sb;
-    else if (sa == 0)
-        r = 0;
-    else
+    fmpz_init(qs);
+    fmpz_init(ns);
+    fmpz_init(l);
+    fmpz_init(r);
+    _fmpz_vec_dot(qs, q, GV(c, x[0]), 3);
+    _fmpz_vec_dot(ns, GV(c, x[0]), GV(c, x[0]), 3);
+    ss = fmpz_sgn(qs);
+    for (i = 1; i < p; i++)
     {
-        /* Compare qa^2 |b|^2 with qb^2 |a|^2.  */
-        _fmpz_vec_dot(na, GV(c, a), GV(c, a), 3);
-        _fmpz_vec_dot(nb, GV(c, b), GV(c, b), 3);
-        fmpz_mul(qa, qa, qa);
-        fmpz_mul(qa, qa, nb);
-        fmpz_mul(qb, qb, qb);
-        fmpz_mul(qb, qb, na);
-        r = sa > 0 ? fmpz_cmp(qa, qb) < 0 : fmpz_cmp(qa, qb) > 0;
+        int far, have = 0;
+
+        _fmpz_vec_dot(qa, q, GV(c, x[i]), 3);
+        sa = fmpz_sgn(qa);
+        if (sa != ss)
+            far = sa < ss;
+        else if (sa == 0)
+            far = 0;
+        else
+        {
+            have = 1;
+            _fmpz_vec_dot(na, GV(c, x[i]), GV(c, x[i]), 3);
+            fmpz_mul(l, qa, qa);
+            fmpz_mul(l, l, ns);
+            fmpz_mul(r, qs, qs);
+            fmpz_mul(r, r, na);
+            far = sa > 0 ? fmpz_cmp(l, r) < 0 : fmpz_cmp(l, r) > 0;
+        }
+        if (far)
+        {
+            s = i;
+            ss = sa;
+            fmpz_swap(qs, qa);
+            if (have)
+                fmpz_swap(ns, na);
+            else
+                _fmpz_vec_dot(ns, GV(c, x[i]), GV(c, x[i]), 3);
+        }
     }
     fmpz_clear(qa);
-    fmpz_clear(qb);
     fmpz_clear(na);
-    fmpz_clear(nb);
-    return r;
+    fmpz_clear(qs);
+    fmpz_clear(ns);
+    fmpz_clear(l);
+    fmpz_clear(r);
+    return s;
 }
 
 /* 1 when the k generators span R^3 (q = their sum is 0 here).  */
@@ -229,8 +307,7 @@ space_by_triple(fan_ctx * c, const fmpz * q, const slong * P, slong p,
             L[n++] = P[i];
     if (n < 3)
         return 0;
-    for (j = 1; j < n && dot_sgn(c->qx + 3 * L[0], GV(c, L[j]),
-                                           c->t) > 0; j++)
+    for (j = 1; j < n && qx_sgn(c, L[0], L[j]) > 0; j++)
         ;
     if (j == 1 || j == n)
         return 0;
@@ -247,8 +324,7 @@ outermost(fan_ctx * c, slong * x, slong n, fmpz * w)
     for (i = 0; i < n; i++)
     {
         if (p > 0 && c->half[x[p - 1]] == c->half[x[i]]
-            && dot_sgn(c->qx + 3 * x[p - 1], GV(c, x[i]),
-                                 c->t) == 0)
+            && qx_sgn(c, x[p - 1], x[i]) == 0)
         {
             if (inner(c, x[p - 1], x[i], w))
                 x[p - 1] = x[i];
@@ -370,9 +446,7 @@ fan_axis(_wc_fan3_t F, fan_ctx * c, const fmpz * q, slong k, slong * x,
     p = outermost(c, x, p, w);
     if (p < 3)
         goto done;
-    for (s = 0, i = 1; i < p; i++)
-        if (farther(c, q, x[i], x[s]))
-            s = i;
+    s = farthest(c, q, x, p);
     m = scan(c, q, x, p, s, z);
     if (m >= 3 && certify(F, c, z, m, k, w))
         res = WC_FAN3_POINTED;
@@ -399,6 +473,9 @@ _wc_fan3(_wc_fan3_t F, const fmpz * G, slong k)
     w = _fmpz_vec_init(3);
     c.G = G;
     c.qx = _fmpz_vec_init(3 * k);
+#ifdef __SIZEOF_INT128__
+    c.qw = NULL;
+#endif
     c.half = malloc(k);
     x = malloc(sizeof(slong) * 3 * k);
     fmpz_init(c.t);
@@ -427,13 +504,18 @@ _wc_fan3(_wc_fan3_t F, const fmpz * G, slong k)
         for (i = 0; i < k && planar; i++)
             planar = dot_sgn(n, G + 3 * i, c.t) == 0;
     }
-    if (!planar)
+    if (!planar && !set_qw(&c, q, k))
+        res = WC_FAN3_NOMEM;
+    else if (!planar)
         res = fan_axis(F, &c, q, k, x, x + k, x + 2 * k, w);
 
 cleanup:
     _fmpz_vec_clear(q, 3);
     _fmpz_vec_clear(w, 3);
     _fmpz_vec_clear(c.qx, 3 * k);
+#ifdef __SIZEOF_INT128__
+    free(c.qw);
+#endif
     free(c.half);
     free(x);
     fmpz_clear(c.t);

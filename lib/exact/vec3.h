@@ -24,7 +24,7 @@ void _wc_qvec3_cross(fmpq * c, const fmpq * a, const fmpq * b);
 /* r := h . p for an integer h and a rational p.  */
 void _wc_zqvec3_dot(fmpq_t r, const fmpz * h, const fmpq * p);
 
-/* The sign of a . b; t is scratch.  */
+/* The sign of a . b; t := a . b (callers read it).  */
 int _wc_zvec3_dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t);
 
 #endif
