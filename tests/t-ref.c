@@ -26,20 +26,6 @@
 
 /* ---- helpers ------------------------------------------------------- */
 
-static void
-vec3(fmpq * g, slong x, slong y, slong t)
-{
-    fmpq_set_si(g + 0, x, 1);
-    fmpq_set_si(g + 1, y, 1);
-    fmpq_set_si(g + 2, t, 1);
-}
-
-static int
-vec3_is_zero(const fmpq * v)
-{
-    return fmpq_is_zero(v + 0) && fmpq_is_zero(v + 1) && fmpq_is_zero(v + 2);
-}
-
 /* r = s a; r may alias a, not s.  */
 static void
 vec3_scale(fmpq * r, const fmpq_t s, const fmpq * a)
@@ -109,7 +95,7 @@ expect_in(const wc_problem_t P, const char * mode, slong x, slong y,
 
     for (j = 0; j < 3; j++)
         fmpq_init(g + j);
-    vec3(g, x, y, t);
+    wctest_vec3_si(g, x, y, t);
     r = in_cone(P, mode, g);
     if (r != expected)
         wctest_fail_problem(P, mode, "(%ld, %ld, %ld) in W(%s): got %d, "
@@ -412,7 +398,7 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
                 fmpq_sub(w + j, w + j, u);
             }
         }
-        if (!vec3_is_zero(w))
+        if (!wctest_vec3_is_zero(w))
         {
             for (j = 0; j < 3; j++)
                 fmpq_set(basis + 3 * nb + j, w + j);
@@ -612,7 +598,7 @@ check_random(void)
             wctest_fail_problem(P, mode, "member of an empty W(%s)", mode);
 
         /* positive multiples */
-        if (!vec3_is_zero(g))
+        if (!wctest_vec3_is_zero(g))
         {
             wctest_rand_fmpq_pos(s3 + 0, 7, 5);
             vec3_scale(h, s3 + 0, g);

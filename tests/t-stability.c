@@ -43,20 +43,6 @@
 /* ---- vectors and the model, from the problem's fields ----------------- */
 
 static void
-vec3_si(fmpq * g, slong x, slong y, slong t)
-{
-    fmpq_set_si(g + 0, x, 1);
-    fmpq_set_si(g + 1, y, 1);
-    fmpq_set_si(g + 2, t, 1);
-}
-
-static int
-vec3_is_zero(const fmpq * v)
-{
-    return fmpq_is_zero(v + 0) && fmpq_is_zero(v + 1) && fmpq_is_zero(v + 2);
-}
-
-static void
 dot3(fmpq_t r, const fmpq * a, const fmpq * b)
 {
     fmpq_t t;
@@ -188,7 +174,7 @@ solution_error(const wc_problem_struct * P, const char * x,
 
     if (x == NULL || (slong) strlen(x) != n)
         return "the string has the wrong length";
-    if (motion && vec3_is_zero(nudot))
+    if (motion && wctest_vec3_is_zero(nudot))
         return "nudot = 0 in a moving solution";
     for (j = 0; j < 3; j++)
     {
@@ -463,7 +449,7 @@ check_wrench(const ctx_t * X, const fmpq * g, int oracle, int modes,
         /* With no touching fixel the one face is R^3 minus the origin,
            which moves unless g = 0 (then nothing is listed: there is no
            linear system to certify).  */
-        slong expect = (t == 0) ? !vec3_is_zero(g) : X->faces;
+        slong expect = (t == 0) ? !wctest_vec3_is_zero(g) : X->faces;
 
         if (R->nmotions + R->nnofaces != expect)
             fail_at(X, g, "%ld faces with a motion + %ld without != %ld "
@@ -1189,7 +1175,7 @@ test_figure5(void)
                 "%ld)", (long) S->weak->dim, (long) S->weak->lineality_dim);
     wc_stability_clear(S);
 
-    vec3_si(g, 0, -1, 0);
+    wctest_vec3_si(g, 0, -1, 0);
     wc_classify_init(R);
     if (wc_classify(R, P, g, 1, 0, err) != WC_OK)
         fail_at(&X, g, "wc_classify failed: %s", err->message);
@@ -1208,7 +1194,7 @@ test_figure5(void)
     X.P = P;
     X.faces = moving_faces(P);
     X.what = "figure 5, friction 1";
-    vec3_si(g, 0, -1, 0);
+    wctest_vec3_si(g, 0, -1, 0);
     wc_classify_init(R);
     if (wc_classify(R, P, g, 1, 0, err) != WC_OK)
         fail_at(&X, g, "wc_classify failed: %s", err->message);
@@ -1217,7 +1203,7 @@ test_figure5(void)
                 R->weak, R->strong, R->strong_paper);
     wc_classify_clear(R);
     check_wrench(&X, g, 1, 1, 1);
-    vec3_si(g, 0, 0, 1);
+    wctest_vec3_si(g, 0, 0, 1);
     if (ref_weakly_stable(P, g) != 0)
         fail_at(&X, g, "the oracle calls a pure torque weakly stable");
     check_problem(P, X.what, 30, -1, 60, 40, 3);
