@@ -333,22 +333,6 @@ wrench_of(fmpq * w, const wc_problem_t P, const wc_fixel_struct * f,
     fmpq_clear(t);
 }
 
-static void
-dot3(fmpq_t r, const fmpq * a, const fmpq * b)
-{
-    fmpq_t t;
-    int j;
-
-    fmpq_init(t);
-    fmpq_zero(r);
-    for (j = 0; j < 3; j++)
-    {
-        fmpq_mul(t, a + j, b + j);
-        fmpq_add(r, r, t);
-    }
-    fmpq_clear(t);
-}
-
 /* Build a wrench that must lie in W(mode) for the mode built alongside:
    choose a set S of fixels to keep in contact (a_n = 0), an acceleration
    nudot with J_n^T nudot = 0 on S (Gram-Schmidt in exact arithmetic),
@@ -389,8 +373,8 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
         wrench_of(w, P, P->fixels + i, P->fixels[i].normal);
         for (k = 0; k < nb; k++)
         {
-            dot3(t, w, basis + 3 * k);
-            dot3(u, basis + 3 * k, basis + 3 * k);
+            wctest_dot3(t, w, basis + 3 * k);
+            wctest_dot3(u, basis + 3 * k, basis + 3 * k);
             fmpq_div(t, t, u);
             for (j = 0; j < 3; j++)
             {
@@ -413,8 +397,8 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
             wctest_rand_fmpq(nudot + j, 3, 2);
     for (k = 0; k < nb; k++)
     {
-        dot3(t, nudot, basis + 3 * k);
-        dot3(u, basis + 3 * k, basis + 3 * k);
+        wctest_dot3(t, nudot, basis + 3 * k);
+        wctest_dot3(u, basis + 3 * k, basis + 3 * k);
         fmpq_div(t, t, u);
         for (j = 0; j < 3; j++)
         {
@@ -433,11 +417,11 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
         int sa;
 
         wrench_of(w, P, f, f->normal);
-        dot3(an, w, nudot);
+        wctest_dot3(an, w, nudot);
         fmpq_neg(d + 0, f->normal + 1);
         fmpq_set(d + 1, f->normal + 0);
         wrench_of(w, P, f, d);
-        dot3(at, w, nudot);
+        wctest_dot3(at, w, nudot);
         fmpq_zero(cn);
         fmpq_zero(ct);
         sa = fmpq_sgn(at);

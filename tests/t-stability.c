@@ -42,22 +42,6 @@
 
 /* ---- vectors and the model, from the problem's fields ----------------- */
 
-static void
-dot3(fmpq_t r, const fmpq * a, const fmpq * b)
-{
-    fmpq_t t;
-    int j;
-
-    fmpq_init(t);
-    fmpq_zero(r);
-    for (j = 0; j < 3; j++)
-    {
-        fmpq_mul(t, a + j, b + j);
-        fmpq_add(r, r, t);
-    }
-    fmpq_clear(t);
-}
-
 /* Column of J for fixel i: its normal (side 0) or its tangent, the normal
    turned by +90 degrees (side 1): (d_x, d_y, (p_i - o) x d).  */
 static void
@@ -205,9 +189,9 @@ solution_error(const wc_problem_struct * P, const char * x,
             }
         }
         jcol(col, P, i, 0);
-        dot3(an, col, nudot);
+        wctest_dot3(an, col, nudot);
         jcol(col, P, i, 1);
-        dot3(at, col, nudot);
+        wctest_dot3(at, col, nudot);
 
         if (f->state == WC_NEAR)
         {
@@ -371,7 +355,7 @@ check_wrench(const ctx_t * X, const fmpq * g, int oracle, int modes,
         fmpq_init(v);
         fmpq_init(w);
         fmpq_init(tmp);
-        dot3(v, R->weak_sep, g);
+        wctest_dot3(v, R->weak_sep, g);
         if (fmpq_sgn(v) <= 0)
             fail_at(X, g, "weak_sep . g <= 0");
         for (i = 0; i < n; i++)
@@ -379,9 +363,9 @@ check_wrench(const ctx_t * X, const fmpq * g, int oracle, int modes,
             if (P->fixels[i].state != WC_TOUCHING)
                 continue;
             jcol(col, P, i, 0);
-            dot3(v, R->weak_sep, col);
+            wctest_dot3(v, R->weak_sep, col);
             jcol(col, P, i, 1);
-            dot3(w, R->weak_sep, col);
+            wctest_dot3(w, R->weak_sep, col);
             fmpq_mul(w, w, P->fixels[i].mu_s);
             fmpq_add(tmp, v, w);
             fmpq_sub(v, v, w);
@@ -826,8 +810,8 @@ constructed_wrench(fmpq * g, const wc_problem_struct * P)
             for (j = 0; j < 3; j++)
                 wctest_rand_fmpq(nudot + j, 4, 3);
             jcol(a, P, fi, 0);
-            dot3(s, a, nudot);
-            dot3(tmp, a, a);
+            wctest_dot3(s, a, nudot);
+            wctest_dot3(tmp, a, a);
             fmpq_div(s, s, tmp);
             for (j = 0; j < 3; j++)
                 fmpq_submul(nudot + j, s, a + j);

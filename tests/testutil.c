@@ -782,3 +782,19 @@ wctest_vec3_is_zero(const fmpq * v)
 {
     return fmpq_is_zero(v + 0) && fmpq_is_zero(v + 1) && fmpq_is_zero(v + 2);
 }
+
+void
+wctest_dot3(fmpq_t r, const fmpq * a, const fmpq * b)
+{
+    fmpq_t t;
+    int j;
+
+    fmpq_init(t);
+    fmpq_zero(r);
+    for (j = 0; j < 3; j++)
+    {
+        fmpq_mul(t, a + j, b + j);
+        fmpq_add(r, r, t);
+    }
+    fmpq_clear(t);
+}

@@ -110,6 +110,9 @@ void wctest_vec3_si(fmpq * g, slong x, slong y, slong t);
 /* Whether v[0..3) is zero.  */
 int wctest_vec3_is_zero(const fmpq * v);
 
+/* r = a . b, over three entries; r may not alias a or b.  */
+void wctest_dot3(fmpq_t r, const fmpq * a, const fmpq * b);
+
 #ifdef __cplusplus
 }
 #endif
