@@ -111,3 +111,50 @@ cli_write_certificate(const char * path, int (*put)(FILE *, const void *),
     }
     return WC_OK;
 }
+
+typedef struct
+{
+    cli_cert_kind kind;
+    const wc_problem_struct * P;
+    const void * answer;
+    wc_error_struct * err;
+}
+cert_job;
+
+static int
+put_certificate(FILE * f, const void * p)
+{
+    const cert_job * j = p;
+
+    switch (j->kind)
+    {
+    case CLI_CERT_FEASIBLE:
+        return wc_certificate_fprint(f, j->answer, j->P, 1);
+    case CLI_CERT_CLASSIFY:
+        return wc_classify_certificate_fprint(f, j->P, j->answer);
+    case CLI_CERT_STABILITY:
+        return wc_stability_certificate_fprint(f, j->P, j->answer, j->err);
+    case CLI_CERT_PLAN:
+        return wc_plan_certificate_fprint(f, j->P, j->answer, j->err);
+    default:
+        return wc_critical_certificate_fprint(f, j->P, j->answer, j->err);
+    }
+}
+
+int
+cli_certify(int status, const char * path, cli_cert_kind kind,
+            const wc_problem_struct * P, const void * answer,
+            wc_error_struct * err)
+{
+    if (status == WC_OK && path != NULL)
+    {
+        cert_job j = { kind, P, answer, err };
+
+        status = cli_write_certificate(path, put_certificate, &j);
+        if (status != WC_OK && err->message == NULL)
+            return status;      /* reported already, or not to be */
+    }
+    if (status != WC_OK)
+        cli_report(err, status);
+    return status;
+}

@@ -99,6 +99,26 @@ int cli_write_certificate(const char * path,
                           int (*put)(FILE *, const void *),
                           const void * data);
 
+/* What a certificate file certifies: answer is a wc_certificate_struct,
+   wc_classify_struct, wc_stability_struct, wc_plan_struct or
+   wc_critical_struct (kind "mode-feasibility", "strong-stability",
+   "stability-set", "plan-goal" or "critical-friction").  */
+typedef enum
+{
+    CLI_CERT_FEASIBLE, CLI_CERT_CLASSIFY, CLI_CERT_STABILITY, CLI_CERT_PLAN,
+    CLI_CERT_CRITICAL
+}
+cli_cert_kind;
+
+/* The end of a command that may write a certificate: status is how
+   computing its answer ended.  When that is WC_OK and path is not NULL,
+   write the certificate of answer for P to path.  Reports err when
+   computing or proving failed.  Returns WC_OK when the command goes on
+   to print its answer, else its exit status.  */
+int cli_certify(int status, const char * path, cli_cert_kind kind,
+                const wc_problem_struct * P, const void * answer,
+                wc_error_struct * err);
+
 /* --- cli-output.c: whole output files, -o FILE --- */
 
 /* Write path with put(f, data) through a temporary file in the same

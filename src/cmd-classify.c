@@ -92,21 +92,6 @@ parse(classify_options * o, const cli_command * self, int argc,
     return c == CLI_EXIT ? p.status : -1;
 }
 
-typedef struct
-{
-    const wc_problem_struct * P;
-    const wc_classify_struct * R;
-}
-cert_job;
-
-static int
-put_certificate(FILE * f, const void * p)
-{
-    const cert_job * j = p;
-
-    return wc_classify_certificate_fprint(f, j->P, j->R);
-}
-
 int
 cmd_classify(const cli_command * self, int argc, char ** argv)
 {
@@ -132,14 +117,8 @@ cmd_classify(const cli_command * self, int argc, char ** argv)
     _wc_answer_init(&A);
     wc_error_init(err);
     status = _wc_run(&A, &R, err);
-    if (status != WC_OK)
-        cli_report(err, status);
-    else if (o.certificate != NULL)
-    {
-        cert_job j = { A.P, A.K };
-
-        status = cli_write_certificate(o.certificate, put_certificate, &j);
-    }
+    status = cli_certify(status, o.certificate, CLI_CERT_CLASSIFY, A.P, A.K,
+                         err);
     if (status == WC_OK)
     {
         if (o.fmt == FMT_JSON)

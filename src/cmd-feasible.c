@@ -32,21 +32,6 @@ const struct option cmd_feasible_options[] = {
     { NULL, 0, NULL, 0 }
 };
 
-typedef struct
-{
-    const wc_problem_struct * P;
-    const wc_certificate_struct * C;
-}
-cert_job;
-
-static int
-put_certificate(FILE * f, const void * p)
-{
-    const cert_job * j = p;
-
-    return wc_certificate_fprint(f, j->C, j->P, 1);
-}
-
 int
 cmd_feasible(const cli_command * self, int argc, char ** argv)
 {
@@ -76,14 +61,8 @@ cmd_feasible(const cli_command * self, int argc, char ** argv)
     _wc_answer_init(&A);
     wc_error_init(err);
     status = _wc_run(&A, &R, err);
-    if (status != WC_OK)
-        cli_report(err, status);
-    else if (certificate != NULL)
-    {
-        cert_job j = { A.P, A.C };
-
-        status = cli_write_certificate(certificate, put_certificate, &j);
-    }
+    status = cli_certify(status, certificate, CLI_CERT_FEASIBLE, A.P, A.C,
+                         err);
     if (status == WC_OK)
     {
         /* JSON: the certificate itself, as batch prints it.  */

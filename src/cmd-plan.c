@@ -44,22 +44,6 @@ const struct option cmd_plan_options[] = {
     { NULL, 0, NULL, 0 }
 };
 
-typedef struct
-{
-    const wc_problem_struct * P;
-    const wc_plan_struct * R;
-    wc_error_struct * err;
-}
-cert_job;
-
-static int
-put_certificate(FILE * f, const void * p)
-{
-    const cert_job * j = p;
-
-    return wc_plan_certificate_fprint(f, j->P, j->R, j->err);
-}
-
 int
 cmd_plan(const cli_command * self, int argc, char ** argv)
 {
@@ -100,19 +84,9 @@ cmd_plan(const cli_command * self, int argc, char ** argv)
     _wc_answer_init(&A);
     wc_error_init(err);
     status = _wc_run(&A, &R, err);
-    if (status == WC_OK && certificate != NULL)
-    {
-        cert_job j = { A.P, A.plan, err };
-
-        status = cli_write_certificate(certificate, put_certificate, &j);
-        if (status != WC_OK && err->message == NULL)
-            status = -status;       /* reported already */
-    }
-    if (status < 0)
-        status = -status;
-    else if (status != WC_OK)
-        cli_report(err, status);
-    else
+    status = cli_certify(status, certificate, CLI_CERT_PLAN, A.P, A.plan,
+                         err);
+    if (status == WC_OK)
     {
         if (fmt == FMT_JSON)
             _wc_answer_fprint_json(stdout, &A);

@@ -257,10 +257,30 @@ put_plan(FILE * f, const void * j)
     return wc_plan_fprint(f, p->R, p->P, 0);
 }
 
+/* A section's end: the answer (put(data)) when status is WC_OK, the
+   commands that reproduce it (the NULL ones left out), and the note
+   when the problem made it fail.  */
+static int
+section_end(FILE * out, int status, printer put, const void * data,
+            const char * const cmds[3], const char * path, wc_error_t err,
+            const char * what)
+{
+    int k;
+
+    if (status == WC_OK)
+        status = pre(out, put, data);
+    for (k = 0; k < 3; k++)
+        if (cmds[k] != NULL)
+            command(out, cmds[k], path);
+    return note(out, status, err, what);
+}
+
 static int
 section_modes(FILE * out, const wc_problem_t P, const char * path,
               wc_error_t err)
 {
+    static const char * const cmds[3] = { "modes --witness",
+                                          "draw --modes -o modes.svg", NULL };
     wc_modes_t M;
     int status;
 
@@ -272,18 +292,18 @@ section_modes(FILE * out, const wc_problem_t P, const char * path,
     status = wc_modes_enumerate(M, P, err);
     if (status == WC_OK)
         status = figure(out, FIG_MODES, P, err);
-    if (status == WC_OK)
-        status = pre(out, put_modes, M);
+    status = section_end(out, status, put_modes, M, cmds, path, err,
+                         "The modes");
     wc_modes_clear(M);
-    command(out, "modes --witness", path);
-    command(out, "draw --modes -o modes.svg", path);
-    return note(out, status, err, "The modes");
+    return status;
 }
 
 static int
 section_stability(FILE * out, const wc_problem_t P, const char * path,
                   wc_error_t err)
 {
+    static const char * const cmds[3] = {
+        "stability", "draw --stability -o stability.svg", NULL };
     wc_stability_t T;
     int status;
 
@@ -304,18 +324,21 @@ section_stability(FILE * out, const wc_problem_t P, const char * path,
                    "stable, paper semantics (eq. 19)");
         push_table(out, T->push_weak, "Pushing region: weakly stable");
     }
-    if (status == WC_OK)
-        status = pre(out, put_stability, T);
+    status = section_end(out, status, put_stability, T, cmds, path, err,
+                         "The stability sets");
     wc_stability_clear(T);
-    command(out, "stability", path);
-    command(out, "draw --stability -o stability.svg", path);
-    return note(out, status, err, "The stability sets");
+    return status;
 }
 
 static int
 section_plan(FILE * out, const wc_problem_t P, const char * path,
              wc_error_t err)
 {
+    const char * const cmds[3] = {
+        "plan", "draw --plan -o goal.svg",
+        P->n <= _WC_DRAW_GRAPH_MAX_FIXELS ? "draw --graph -o graph.svg" : NULL
+    };
+    plan_job j = { NULL, P };
     wc_plan_t R;
     int status;
 
@@ -331,18 +354,11 @@ section_plan(FILE * out, const wc_problem_t P, const char * path,
         push_table(out, R->push_goal, "Pushing region: G_goal");
     if (status == WC_OK && P->n <= _WC_DRAW_GRAPH_MAX_FIXELS)
         status = figure(out, FIG_GRAPH, P, err);
-    if (status == WC_OK)
-    {
-        plan_job j = { R, P };
-
-        status = pre(out, put_plan, &j);
-    }
+    j.R = R;
+    status = section_end(out, status, put_plan, &j, cmds, path, err,
+                         "The insertion plan");
     wc_plan_clear(R);
-    command(out, "plan", path);
-    command(out, "draw --plan -o goal.svg", path);
-    if (P->n <= _WC_DRAW_GRAPH_MAX_FIXELS)
-        command(out, "draw --graph -o graph.svg", path);
-    return note(out, status, err, "The insertion plan");
+    return status;
 }
 
 static int

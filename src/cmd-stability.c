@@ -100,22 +100,6 @@ split_bias(char * bias[3], char ** copy, const char * value)
     return k == 3 && strchr(bias[2], ',') == NULL;
 }
 
-typedef struct
-{
-    const wc_problem_struct * P;
-    const wc_stability_struct * S;
-    wc_error_struct * err;
-}
-cert_job;
-
-static int
-put_certificate(FILE * f, const void * p)
-{
-    const cert_job * j = p;
-
-    return wc_stability_certificate_fprint(f, j->P, j->S, j->err);
-}
-
 /* -1 to go on, or the exit status.  */
 static int
 parse(cli_format * fmt, const char ** bias, const char ** length,
@@ -175,19 +159,9 @@ cmd_stability(const cli_command * self, int argc, char ** argv)
     _wc_answer_init(&A);
     wc_error_init(err);
     status = _wc_run(&A, &R, err);
-    if (status == WC_OK && certificate != NULL)
-    {
-        cert_job j = { A.P, A.S, err };
-
-        status = cli_write_certificate(certificate, put_certificate, &j);
-        if (status != WC_OK && err->message == NULL)
-            status = -status;       /* reported already */
-    }
-    if (status < 0)
-        status = -status;
-    else if (status != WC_OK)
-        cli_report(err, status);
-    else
+    status = cli_certify(status, certificate, CLI_CERT_STABILITY, A.P, A.S,
+                         err);
+    if (status == WC_OK)
     {
         if (fmt == FMT_JSON)
             _wc_answer_fprint_json(stdout, &A);

@@ -409,22 +409,6 @@ print_answer(const answer * a, const wc_problem_t P, const sweep_options * o)
         fputs("}\n", stdout);
 }
 
-typedef struct
-{
-    const wc_problem_struct * P;
-    const wc_critical_struct * C;
-    wc_error_struct * err;
-}
-cert_job;
-
-static int
-put_certificate(FILE * f, const void * p)
-{
-    const cert_job * j = p;
-
-    return wc_critical_certificate_fprint(f, j->P, j->C, j->err);
-}
-
 int
 cmd_sweep(const cli_command * self, int argc, char ** argv)
 {
@@ -455,19 +439,9 @@ cmd_sweep(const cli_command * self, int argc, char ** argv)
                                          "a plan certificate", err);
     if (status == WC_OK)
         status = compute(&a, P, &o, err);
-    if (status == WC_OK && o.certificate != NULL)
-    {
-        cert_job j = { P, a.crit.C, err };
-
-        status = cli_write_certificate(o.certificate, put_certificate, &j);
-        if (status != WC_OK && err->message == NULL)
-            status = -status;       /* reported already */
-    }
-    if (status < 0)
-        status = -status;
-    else if (status != WC_OK)
-        cli_report(err, status);
-    else
+    status = cli_certify(status, o.certificate, CLI_CERT_CRITICAL, P,
+                         a.crit.C, err);
+    if (status == WC_OK)
     {
         print_answer(&a, P, &o);
         status = cli_finish_output();

@@ -22,18 +22,10 @@
 
 W=$WRENCHCONE
 D=$top_srcdir/data
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/cli-compare.XXXXXX") || exit 99
-trap 'rm -rf "$tmp"' 0
-trap 'exit 1' HUP INT TERM
-failures=0
-
-fail() {
-    printf 'FAIL: %s: %s\n' "$1" "$2"
-    failures=$((failures + 1))
-}
+. "$top_srcdir/tests/clitest.sh"
 
 # run NAME WANT ARGS...: `wrenchcone compare ARGS` must exit WANT; its
-# stdout and stderr are left in $tmp/out and $tmp/err.
+# stdout and stderr are left in $tmp/out and $tmp/err (not clitest.sh's).
 run() {
     run_name=$1
     run_want=$2

@@ -13,24 +13,7 @@
 : "${top_srcdir:?top_srcdir is not set}"
 
 bad="$top_srcdir/tests/bad"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/cli-errors.XXXXXX") || exit 99
-trap 'rm -rf "$tmp"' 0
-trap 'exit 1' HUP INT TERM
-failures=0
-
-fail() {
-    printf 'FAIL: %s: %s\n' "$1" "$2"
-    failures=$((failures + 1))
-}
-
-# run INPUT ARGS...: run the program on ARGS with INPUT as stdin; sets
-# $status and leaves stdout and stderr in $tmp/out and $tmp/err.
-run() {
-    run_input=$1
-    shift
-    "$WRENCHCONE" "$@" <"$run_input" >"$tmp/out" 2>"$tmp/err"
-    status=$?
-}
+. "$top_srcdir/tests/clitest.sh"
 
 # expect_status NAME WANT: the last run's status is WANT and its stdout
 # is empty.

@@ -37,24 +37,7 @@
 
 certs="$top_srcdir/tests/certs"
 data="$top_srcdir/data"
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/cli-verify.XXXXXX") || exit 99
-trap 'rm -rf "$tmp"' 0
-trap 'exit 1' HUP INT TERM
-failures=0
-
-fail() {
-    printf 'FAIL: %s: %s\n' "$1" "$2"
-    failures=$((failures + 1))
-}
-
-# run INPUT ARGS...: run the program on ARGS with INPUT as stdin; sets
-# $status and leaves stdout and stderr in $tmp/out and $tmp/err.
-run() {
-    run_input=$1
-    shift
-    "$WRENCHCONE" "$@" <"$run_input" >"$tmp/out" 2>"$tmp/err"
-    status=$?
-}
+. "$top_srcdir/tests/clitest.sh"
 
 # expect NAME STATUS STDOUT STDERR: the last run exited with STATUS and
 # printed exactly STDOUT and STDERR (each one line, or nothing if empty).

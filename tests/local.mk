@@ -89,7 +89,8 @@ AM_TESTS_ENVIRONMENT = \
 	LSAN_OPTIONS="suppressions=$(abs_top_srcdir)/tests/lsan.supp:print_suppressions=0$${LSAN_OPTIONS:+:$$LSAN_OPTIONS}"; \
 	export WRENCHCONE top_srcdir top_builddir CC WC_SAN MAKE PYTHON LSAN_OPTIONS;
 
-EXTRA_DIST += $(SH_TESTS) tests/bad tests/golden tests/certs tests/lsan.supp \
+EXTRA_DIST += $(SH_TESTS) tests/clitest.sh tests/bad tests/golden \
+	tests/certs tests/lsan.supp \
 	tests/update-golden.py tests/install/one-cone.c tests/cert-tamper.py \
 	tests/png-pixels.py
 

@@ -391,32 +391,6 @@ check_svg(const wc_problem_t P)
     wc_error_clear(err);
 }
 
-static void
-load(wc_problem_t P, const char * name)
-{
-    const char * top = getenv("top_srcdir");
-    char path[4096], * text;
-    size_t len;
-    long size;
-    FILE * f;
-    wc_error_t err;
-
-    snprintf(path, sizeof path, "%s/data/%s", top != NULL ? top : ".", name);
-    if ((f = fopen(path, "rb")) == NULL)
-        wctest_fail("cannot open %s", path);
-    fseek(f, 0, SEEK_END);
-    size = ftell(f);
-    rewind(f);
-    text = malloc(size + 1);
-    len = fread(text, 1, size, f);
-    fclose(f);
-    wc_error_init(err);
-    if (wc_problem_parse(P, text, len, path, err) != WC_OK)
-        wctest_fail("%s does not parse", path);
-    wc_error_clear(err);
-    free(text);
-}
-
 int
 main(void)
 {
@@ -432,7 +406,7 @@ main(void)
         wc_problem_t P;
 
         wc_problem_init(P);
-        load(P, files[i]);
+        wctest_load_data(P, files[i]);
         if (P->shape != WC_SHAPE_NONE)
             check_regions(P, files[i]);
         check_plan(P, files[i]);
@@ -444,7 +418,7 @@ main(void)
         wc_problem_t P;
 
         wc_problem_init(P);
-        load(P, "section4.wc");
+        wctest_load_data(P, "section4.wc");
         check_mode(P, "na");
         check_mode(P, "ss");
         check_mode(P, "nu");
@@ -455,7 +429,7 @@ main(void)
         fmpq g[3];
 
         wc_problem_init(P);
-        load(P, "disk-two-fixels-insert.wc");
+        wctest_load_data(P, "disk-two-fixels-insert.wc");
         for (i = 0; i < 3; i++)
             fmpq_init(g + i);
         fmpq_set_si(g + 0, -1, 1);

@@ -30,14 +30,6 @@
 #include "testutil.h"
 
 static void
-vec3_si(fmpq * g, slong x, slong y, slong t)
-{
-    fmpq_set_si(g + 0, x, 1);
-    fmpq_set_si(g + 1, y, 1);
-    fmpq_set_si(g + 2, t, 1);
-}
-
-static void
 fail_g(const wc_problem_t P, const char * what, const fmpq * g,
        const char * msg)
 {
@@ -45,34 +37,6 @@ fail_g(const wc_problem_t P, const char * what, const fmpq * g,
 
     wctest_fail_problem(P, NULL, "%s: %s%s%s", what, msg,
                         s != NULL ? " at g = " : "", s != NULL ? s : "");
-}
-
-/* A problem from data/ (top_srcdir from the test harness).  */
-static void
-load(wc_problem_t P, const char * name)
-{
-    const char * top = getenv("top_srcdir");
-    char path[4096];
-    char * text;
-    size_t len;
-    long size;
-    FILE * f;
-    wc_error_t err;
-
-    snprintf(path, sizeof path, "%s/data/%s", top != NULL ? top : ".", name);
-    if ((f = fopen(path, "rb")) == NULL)
-        wctest_fail("cannot open %s", path);
-    fseek(f, 0, SEEK_END);
-    size = ftell(f);
-    rewind(f);
-    text = malloc(size + 1);
-    len = fread(text, 1, size, f);
-    fclose(f);
-    wc_error_init(err);
-    if (wc_problem_parse(P, text, len, path, err) != WC_OK)
-        wctest_fail("%s does not parse: %s", path, err->message);
-    wc_error_clear(err);
-    free(text);
 }
 
 /* ---- strings ----------------------------------------------------------- */
@@ -744,7 +708,7 @@ test_disk(void)
     wc_problem_init(P);
     wc_plan_init(R);
     wc_error_init(err);
-    load(P, "disk-two-fixels-insert.wc");
+    wctest_load_data(P, "disk-two-fixels-insert.wc");
     if (wc_plan(R, P, 1, err) != WC_OK)
         wctest_fail("disk: %s", err->message);
     if (R->goal->npieces != 1)
@@ -809,16 +773,17 @@ test_three(void)
     fmpq_init(mu);
     for (k = 0; k < 3; k++)
         fmpq_init(g + k);
-    load(P, "three-fixels.wc");     /* the plain block of wrenchcone(5) */
+    /* the plain block of wrenchcone(5) */
+    wctest_load_data(P, "three-fixels.wc");
     check_problem(P, "three-fixels.wc", 1, wctest_iters(4));
     wc_problem_clear(P);
     wc_problem_init(P);
-    load(P, "three-fixels-insert.wc");
+    wctest_load_data(P, "three-fixels-insert.wc");
     check_problem(P, "three-fixels-insert.wc", 1, wctest_iters(6));
     check_critical(P, "three-fixels-insert.wc");
 
     wc_plan_wrench_init(W);
-    vec3_si(g, -7, -5, 5);
+    wctest_vec3_si(g, -7, -5, 5);
     if (wc_plan_wrench(W, P, g, 1, err) != WC_OK)
         wctest_fail("three-fixels: %s", err->message);
     if (W->in_goal || W->verdict != WC_PLAN_ACCEPTED || W->nholding != 1
@@ -913,7 +878,7 @@ test_complete4(void)
         int acc;
 
         if (i < 6)
-            vec3_si(g, ws[i][0], ws[i][1], ws[i][2]);
+            wctest_vec3_si(g, ws[i][0], ws[i][1], ws[i][2]);
         else if (R->has_extra)
             for (k = 0; k < 3; k++)
                 fmpq_set(g + k, R->extra + k);

@@ -26,20 +26,6 @@
 
 /* ---- helpers ------------------------------------------------------- */
 
-static void
-vec3(fmpq * g, slong x, slong y, slong t)
-{
-    fmpq_set_si(g + 0, x, 1);
-    fmpq_set_si(g + 1, y, 1);
-    fmpq_set_si(g + 2, t, 1);
-}
-
-static int
-vec3_is_zero(const fmpq * v)
-{
-    return fmpq_is_zero(v + 0) && fmpq_is_zero(v + 1) && fmpq_is_zero(v + 2);
-}
-
 /* r = s a; r may alias a, not s.  */
 static void
 vec3_scale(fmpq * r, const fmpq_t s, const fmpq * a)
@@ -109,7 +95,7 @@ expect_in(const wc_problem_t P, const char * mode, slong x, slong y,
 
     for (j = 0; j < 3; j++)
         fmpq_init(g + j);
-    vec3(g, x, y, t);
+    wctest_vec3_si(g, x, y, t);
     r = in_cone(P, mode, g);
     if (r != expected)
         wctest_fail_problem(P, mode, "(%ld, %ld, %ld) in W(%s): got %d, "
@@ -347,22 +333,6 @@ wrench_of(fmpq * w, const wc_problem_t P, const wc_fixel_struct * f,
     fmpq_clear(t);
 }
 
-static void
-dot3(fmpq_t r, const fmpq * a, const fmpq * b)
-{
-    fmpq_t t;
-    int j;
-
-    fmpq_init(t);
-    fmpq_zero(r);
-    for (j = 0; j < 3; j++)
-    {
-        fmpq_mul(t, a + j, b + j);
-        fmpq_add(r, r, t);
-    }
-    fmpq_clear(t);
-}
-
 /* Build a wrench that must lie in W(mode) for the mode built alongside:
    choose a set S of fixels to keep in contact (a_n = 0), an acceleration
    nudot with J_n^T nudot = 0 on S (Gram-Schmidt in exact arithmetic),
@@ -403,8 +373,8 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
         wrench_of(w, P, P->fixels + i, P->fixels[i].normal);
         for (k = 0; k < nb; k++)
         {
-            dot3(t, w, basis + 3 * k);
-            dot3(u, basis + 3 * k, basis + 3 * k);
+            wctest_dot3(t, w, basis + 3 * k);
+            wctest_dot3(u, basis + 3 * k, basis + 3 * k);
             fmpq_div(t, t, u);
             for (j = 0; j < 3; j++)
             {
@@ -412,7 +382,7 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
                 fmpq_sub(w + j, w + j, u);
             }
         }
-        if (!vec3_is_zero(w))
+        if (!wctest_vec3_is_zero(w))
         {
             for (j = 0; j < 3; j++)
                 fmpq_set(basis + 3 * nb + j, w + j);
@@ -427,8 +397,8 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
             wctest_rand_fmpq(nudot + j, 3, 2);
     for (k = 0; k < nb; k++)
     {
-        dot3(t, nudot, basis + 3 * k);
-        dot3(u, basis + 3 * k, basis + 3 * k);
+        wctest_dot3(t, nudot, basis + 3 * k);
+        wctest_dot3(u, basis + 3 * k, basis + 3 * k);
         fmpq_div(t, t, u);
         for (j = 0; j < 3; j++)
         {
@@ -447,11 +417,11 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
         int sa;
 
         wrench_of(w, P, f, f->normal);
-        dot3(an, w, nudot);
+        wctest_dot3(an, w, nudot);
         fmpq_neg(d + 0, f->normal + 1);
         fmpq_set(d + 1, f->normal + 0);
         wrench_of(w, P, f, d);
-        dot3(at, w, nudot);
+        wctest_dot3(at, w, nudot);
         fmpq_zero(cn);
         fmpq_zero(ct);
         sa = fmpq_sgn(at);
@@ -612,7 +582,7 @@ check_random(void)
             wctest_fail_problem(P, mode, "member of an empty W(%s)", mode);
 
         /* positive multiples */
-        if (!vec3_is_zero(g))
+        if (!wctest_vec3_is_zero(g))
         {
             wctest_rand_fmpq_pos(s3 + 0, 7, 5);
             vec3_scale(h, s3 + 0, g);

@@ -31,14 +31,6 @@
 /* ---- helpers ------------------------------------------------------- */
 
 static void
-vec3(fmpq * g, slong x, slong y, slong t)
-{
-    fmpq_set_si(g + 0, x, 1);
-    fmpq_set_si(g + 1, y, 1);
-    fmpq_set_si(g + 2, t, 1);
-}
-
-static void
 add_fixel(wc_problem_t P, slong px, slong py, slong nx, slong ny)
 {
     wc_fixel_struct * f = wc_problem_add_fixel(P);
@@ -503,7 +495,7 @@ check_disk(void)
 
         for (k = 0; k < 11; k++)
         {
-            vec3(g, fixed[k][0], fixed[k][1], fixed[k][2]);
+            wctest_vec3_si(g, fixed[k][0], fixed[k][1], fixed[k][2]);
             e = disk_formula(g, P->mu_s);
             expect_verdicts(P, g, e, e);
         }
@@ -560,26 +552,26 @@ check_three_fixels(void)
 
     /* W(suu) holds 0 (a = 0, c = 0); the goal admits sss, so the complete
        model leaves the goal too.  */
-    vec3(g, 0, 0, 0);
+    wctest_vec3_si(g, 0, 0, 0);
     expect_in(P, "suu", g, 1);
     expect_verdicts(P, g, 0, 0);
 
     /* pulling straight up: free a = (1, 1, 0), so suu; at the goal ssm
        (fixel 3 held with no force) leaves it */
-    vec3(g, 0, 1, 0);
+    wctest_vec3_si(g, 0, 1, 0);
     expect_in(P, "suu", g, 1);
     expect_in(P, "ssm", g, 1);
     expect_verdicts(P, g, 0, 0);
 
     /* pulling off fixel 3: free a = (0, 0, 1), so uus and sss */
-    vec3(g, 1, 0, 0);
+    wctest_vec3_si(g, 1, 0, 0);
     expect_in(P, "uus", g, 1);
     expect_in(P, "sss", g, 1);
     expect_verdicts(P, g, 0, 0);
 
     /* pressing straight down never seats against fixel 3: free a_3n = 0
        (uus), and at the goal c_1n = c_2n = 1/2 give nudot = 0 (mms) */
-    vec3(g, 0, -1, 0);
+    wctest_vec3_si(g, 0, -1, 0);
     expect_in(P, "uus", g, 1);
     expect_in(P, "mms", g, 1);
     expect_verdicts(P, g, 0, 0);
@@ -589,7 +581,7 @@ check_three_fixels(void)
        (normal, tangential; both inside the 1/5 cone) give nudot =
        (-39/500, 39/250, -39/250), so a = (78/250, 0, 0).  The box tips
        off fixel 1 on friction alone.  */
-    vec3(g, -1, -1, 0);
+    wctest_vec3_si(g, -1, -1, 0);
     expect_in(P, "uuu", g, 1);
     expect_in(P, "suu", g, 0);
     expect_in(P, "usu", g, 0);
@@ -598,11 +590,11 @@ check_three_fixels(void)
     expect_verdicts(P, g, 0, 0);
 
     /* Members, from the LPs; confirmed by the paper-route cones below.  */
-    vec3(g, -1, -3, 0);
+    wctest_vec3_si(g, -1, -3, 0);
     expect_verdicts(P, g, 1, 1);
     if (in_paper_union(P, g))
         wctest_fail_problem(P, NULL, "(-1, -3, 0): the cones disagree");
-    vec3(g, -3, -4, 2);
+    wctest_vec3_si(g, -3, -4, 2);
     expect_verdicts(P, g, 1, 1);
     if (in_paper_union(P, g))
         wctest_fail_problem(P, NULL, "(-3, -4, 2): the cones disagree");
@@ -624,7 +616,7 @@ check_three_fixels(void)
        {1} -> {1, 3} by msa, {1, 3} -> goal by mam, and the goal admits
        only mmm.  */
     set_friction(P, 0, 1);
-    vec3(g, -3, -1, 2);
+    wctest_vec3_si(g, -3, -1, 2);
     expect_in(P, "aaa", g, 1);
     expect_in(P, "msu", g, 1);
     expect_in(P, "msa", g, 1);
@@ -666,7 +658,7 @@ check_complete_beats_goal(void)
     add_fixel(P, -1, 1, 1, 0);
     set_friction(P, 0, 1);
 
-    vec3(g, -4, 1, 0);
+    wctest_vec3_si(g, -4, 1, 0);
     expect_in(P, "su", g, 1);
     expect_in(P, "sa", g, 1);
     expect_in(P, "ma", g, 0);
@@ -680,7 +672,7 @@ check_complete_beats_goal(void)
     /* g = (-4, 1, 2): now c_2n = 3 at fixel 2 leaves a_1n = 0, so the
        goal admits sm (fixel 1 may be lost) and the complete model
        rejects as well */
-    vec3(g, -4, 1, 2);
+    wctest_vec3_si(g, -4, 1, 2);
     expect_in(P, "sm", g, 1);
     expect_verdicts(P, g, 0, 0);
 

@@ -240,32 +240,9 @@ done:
 static int
 load_data(wc_problem_t P, const char * name)
 {
-    const char * top = getenv("top_srcdir");
-    char * path, * text;
-    FILE * f;
-    long n;
-    wc_error_t err;
-    int st;
-
-    if (top == NULL)
+    if (getenv("top_srcdir") == NULL)
         return 0;
-    path = malloc(strlen(top) + strlen(name) + 8);
-    sprintf(path, "%s/data/%s", top, name);
-    f = fopen(path, "rb");
-    if (f == NULL || fseek(f, 0, SEEK_END) != 0 || (n = ftell(f)) < 0
-        || fseek(f, 0, SEEK_SET) != 0)
-        wctest_fail("cannot read %s", path);
-    text = malloc((size_t) n + 1);
-    if (fread(text, 1, (size_t) n, f) != (size_t) n)
-        wctest_fail("cannot read %s", path);
-    fclose(f);
-    wc_error_init(err);
-    st = wc_problem_parse(P, text, (size_t) n, path, err);
-    if (st != WC_OK)
-        wctest_fail("cannot parse %s", path);
-    wc_error_clear(err);
-    free(text);
-    free(path);
+    wctest_load_data(P, name);
     return 1;
 }
 

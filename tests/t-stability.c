@@ -42,36 +42,6 @@
 
 /* ---- vectors and the model, from the problem's fields ----------------- */
 
-static void
-vec3_si(fmpq * g, slong x, slong y, slong t)
-{
-    fmpq_set_si(g + 0, x, 1);
-    fmpq_set_si(g + 1, y, 1);
-    fmpq_set_si(g + 2, t, 1);
-}
-
-static int
-vec3_is_zero(const fmpq * v)
-{
-    return fmpq_is_zero(v + 0) && fmpq_is_zero(v + 1) && fmpq_is_zero(v + 2);
-}
-
-static void
-dot3(fmpq_t r, const fmpq * a, const fmpq * b)
-{
-    fmpq_t t;
-    int j;
-
-    fmpq_init(t);
-    fmpq_zero(r);
-    for (j = 0; j < 3; j++)
-    {
-        fmpq_mul(t, a + j, b + j);
-        fmpq_add(r, r, t);
-    }
-    fmpq_clear(t);
-}
-
 /* Column of J for fixel i: its normal (side 0) or its tangent, the normal
    turned by +90 degrees (side 1): (d_x, d_y, (p_i - o) x d).  */
 static void
@@ -188,7 +158,7 @@ solution_error(const wc_problem_struct * P, const char * x,
 
     if (x == NULL || (slong) strlen(x) != n)
         return "the string has the wrong length";
-    if (motion && vec3_is_zero(nudot))
+    if (motion && wctest_vec3_is_zero(nudot))
         return "nudot = 0 in a moving solution";
     for (j = 0; j < 3; j++)
     {
@@ -219,9 +189,9 @@ solution_error(const wc_problem_struct * P, const char * x,
             }
         }
         jcol(col, P, i, 0);
-        dot3(an, col, nudot);
+        wctest_dot3(an, col, nudot);
         jcol(col, P, i, 1);
-        dot3(at, col, nudot);
+        wctest_dot3(at, col, nudot);
 
         if (f->state == WC_NEAR)
         {
@@ -385,7 +355,7 @@ check_wrench(const ctx_t * X, const fmpq * g, int oracle, int modes,
         fmpq_init(v);
         fmpq_init(w);
         fmpq_init(tmp);
-        dot3(v, R->weak_sep, g);
+        wctest_dot3(v, R->weak_sep, g);
         if (fmpq_sgn(v) <= 0)
             fail_at(X, g, "weak_sep . g <= 0");
         for (i = 0; i < n; i++)
@@ -393,9 +363,9 @@ check_wrench(const ctx_t * X, const fmpq * g, int oracle, int modes,
             if (P->fixels[i].state != WC_TOUCHING)
                 continue;
             jcol(col, P, i, 0);
-            dot3(v, R->weak_sep, col);
+            wctest_dot3(v, R->weak_sep, col);
             jcol(col, P, i, 1);
-            dot3(w, R->weak_sep, col);
+            wctest_dot3(w, R->weak_sep, col);
             fmpq_mul(w, w, P->fixels[i].mu_s);
             fmpq_add(tmp, v, w);
             fmpq_sub(v, v, w);
@@ -463,7 +433,7 @@ check_wrench(const ctx_t * X, const fmpq * g, int oracle, int modes,
         /* With no touching fixel the one face is R^3 minus the origin,
            which moves unless g = 0 (then nothing is listed: there is no
            linear system to certify).  */
-        slong expect = (t == 0) ? !vec3_is_zero(g) : X->faces;
+        slong expect = (t == 0) ? !wctest_vec3_is_zero(g) : X->faces;
 
         if (R->nmotions + R->nnofaces != expect)
             fail_at(X, g, "%ld faces with a motion + %ld without != %ld "
@@ -840,8 +810,8 @@ constructed_wrench(fmpq * g, const wc_problem_struct * P)
             for (j = 0; j < 3; j++)
                 wctest_rand_fmpq(nudot + j, 4, 3);
             jcol(a, P, fi, 0);
-            dot3(s, a, nudot);
-            dot3(tmp, a, a);
+            wctest_dot3(s, a, nudot);
+            wctest_dot3(tmp, a, a);
             fmpq_div(s, s, tmp);
             for (j = 0; j < 3; j++)
                 fmpq_submul(nudot + j, s, a + j);
@@ -1189,7 +1159,7 @@ test_figure5(void)
                 "%ld)", (long) S->weak->dim, (long) S->weak->lineality_dim);
     wc_stability_clear(S);
 
-    vec3_si(g, 0, -1, 0);
+    wctest_vec3_si(g, 0, -1, 0);
     wc_classify_init(R);
     if (wc_classify(R, P, g, 1, 0, err) != WC_OK)
         fail_at(&X, g, "wc_classify failed: %s", err->message);
@@ -1208,7 +1178,7 @@ test_figure5(void)
     X.P = P;
     X.faces = moving_faces(P);
     X.what = "figure 5, friction 1";
-    vec3_si(g, 0, -1, 0);
+    wctest_vec3_si(g, 0, -1, 0);
     wc_classify_init(R);
     if (wc_classify(R, P, g, 1, 0, err) != WC_OK)
         fail_at(&X, g, "wc_classify failed: %s", err->message);
@@ -1217,7 +1187,7 @@ test_figure5(void)
                 R->weak, R->strong, R->strong_paper);
     wc_classify_clear(R);
     check_wrench(&X, g, 1, 1, 1);
-    vec3_si(g, 0, 0, 1);
+    wctest_vec3_si(g, 0, 0, 1);
     if (ref_weakly_stable(P, g) != 0)
         fail_at(&X, g, "the oracle calls a pure torque weakly stable");
     check_problem(P, X.what, 30, -1, 60, 40, 3);

@@ -741,3 +741,60 @@ wctest_random_mode_kinematic(char * mode, const wc_problem_t P)
 {
     random_mode(mode, P, "slrn", "sa");
 }
+
+void
+wctest_load_data(wc_problem_t P, const char * name)
+{
+    const char * top = getenv("top_srcdir");
+    char path[4096], * text;
+    size_t len;
+    long size;
+    FILE * f;
+    wc_error_t err;
+
+    snprintf(path, sizeof path, "%s/data/%s", top != NULL ? top : ".", name);
+    if ((f = fopen(path, "rb")) == NULL || fseek(f, 0, SEEK_END) != 0
+        || (size = ftell(f)) < 0 || fseek(f, 0, SEEK_SET) != 0)
+        wctest_fail("cannot read %s", path);
+    if ((text = malloc((size_t) size + 1)) == NULL)
+        wctest_fail("out of memory reading %s", path);
+    len = fread(text, 1, (size_t) size, f);
+    fclose(f);
+    if (len != (size_t) size)
+        wctest_fail("cannot read %s", path);
+    wc_error_init(err);
+    if (wc_problem_parse(P, text, len, path, err) != WC_OK)
+        wctest_fail("%s does not parse: %s", path, err->message);
+    wc_error_clear(err);
+    free(text);
+}
+
+void
+wctest_vec3_si(fmpq * g, slong x, slong y, slong t)
+{
+    fmpq_set_si(g + 0, x, 1);
+    fmpq_set_si(g + 1, y, 1);
+    fmpq_set_si(g + 2, t, 1);
+}
+
+int
+wctest_vec3_is_zero(const fmpq * v)
+{
+    return fmpq_is_zero(v + 0) && fmpq_is_zero(v + 1) && fmpq_is_zero(v + 2);
+}
+
+void
+wctest_dot3(fmpq_t r, const fmpq * a, const fmpq * b)
+{
+    fmpq_t t;
+    int j;
+
+    fmpq_init(t);
+    fmpq_zero(r);
+    for (j = 0; j < 3; j++)
+    {
+        fmpq_mul(t, a + j, b + j);
+        fmpq_add(r, r, t);
+    }
+    fmpq_clear(t);
+}

@@ -99,6 +99,20 @@ void wctest_random_mode(char * mode, const wc_problem_t P);
 /* Table 1 letters: s l r n on touching fixels, s a on near ones.  */
 void wctest_random_mode_kinematic(char * mode, const wc_problem_t P);
 
+/* data/NAME into P, freshly initialised (top_srcdir from the environment,
+   as make check sets it; "." without it); fails the test when it cannot
+   be read or parsed.  */
+void wctest_load_data(wc_problem_t P, const char * name);
+
+/* g = (x, y, t).  */
+void wctest_vec3_si(fmpq * g, slong x, slong y, slong t);
+
+/* Whether v[0..3) is zero.  */
+int wctest_vec3_is_zero(const fmpq * v);
+
+/* r = a . b, over three entries; r may not alias a or b.  */
+void wctest_dot3(fmpq_t r, const fmpq * a, const fmpq * b);
+
 #ifdef __cplusplus
 }
 #endif

@@ -288,7 +288,6 @@ int
 _wc_draw_modes(_wc_scene_t S, const wc_problem_t P, wc_error_t err)
 {
     marks m;
-    char * mu = NULL;
     wc_modes_t M;
     slong i;
     int status;
@@ -311,20 +310,14 @@ _wc_draw_modes(_wc_scene_t S, const wc_problem_t P, wc_error_t err)
         status = _wc_scene_legend(S, _WC_TAG_TRANSLATION, 0,
                                   "translation of a mode");
     if (status == WC_OK)
-        status = _wc_scene_title(S, "Feasible contact modes");
-    if (status == WC_OK && (mu = _wc_draw_friction(P)) == NULL)
-        status = WC_EINTERNAL;
-    if (status == WC_OK)
-        status = _wc_scene_caption(S, "%s, friction %s (the modes do not "
-                                   "depend on it): %ld kinematically feasible "
-                                   "modes, each at the rotation centre of "
-                                   "one of its twists (ccw: counter-"
-                                   "clockwise), or as the direction of a "
-                                   "translation.%s%s%s", _wc_draw_name(P),
-                                   mu, (long) M->count, m.rest[0]
-                                   ? " At rest (zero twist): " : "", m.rest,
-                                   m.rest[0] ? "." : "");
-    free(mu);
+        status = _wc_draw_titles(S, P, "Feasible contact modes", " (the "
+                                 "modes do not depend on it): %ld "
+                                 "kinematically feasible modes, each at the "
+                                 "rotation centre of one of its twists (ccw: "
+                                 "counter-clockwise), or as the direction of "
+                                 "a translation.%s%s%s", (long) M->count,
+                                 m.rest[0] ? " At rest (zero twist): " : "",
+                                 m.rest, m.rest[0] ? "." : "");
     if (m.c != NULL)
         _fmpq_vec_clear(m.c, 2 * M->count + 2);
     free(m.text);

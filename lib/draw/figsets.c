@@ -34,7 +34,6 @@ _wc_draw_stability(_wc_scene_t S, const wc_problem_t P, wc_error_t err)
                               "strongly stable (paper, eq. 19)",
                               "weakly stable" };
     wc_stability_t T;
-    char * mu = NULL;
     int status, k;
 
     wc_stability_init(T);
@@ -57,20 +56,14 @@ _wc_draw_stability(_wc_scene_t S, const wc_problem_t P, wc_error_t err)
             status = ends_legend(S);
     }
     if (status == WC_OK)
-        status = _wc_scene_title(S, "Stability: where a frictionless finger "
-                                 "may push");
-    if (status == WC_OK && (mu = _wc_draw_friction(P)) == NULL)
-        status = WC_EINTERNAL;
-    if (status == WC_OK)
-        status = _wc_scene_caption(S, "%s, friction %s. Thick strokes on the "
-                                   "boundary: the places where pushing with "
-                                   "a frictionless finger gives a wrench in "
-                                   "each set, innermost the strongly stable "
-                                   "set (exact semantics), then eq. 19's, "
-                                   "then the weakly stable set.%s",
-                                   _wc_draw_name(P), mu,
-                                   T->has_push ? "" : no_shape);
-    free(mu);
+        status = _wc_draw_titles(S, P, "Stability: where a frictionless "
+                                 "finger may push", ". Thick strokes on the "
+                                 "boundary: the places where pushing with a "
+                                 "frictionless finger gives a wrench in each "
+                                 "set, innermost the strongly stable set "
+                                 "(exact semantics), then eq. 19's, then the "
+                                 "weakly stable set.%s",
+                                 T->has_push ? "" : no_shape);
     wc_stability_clear(T);
     return status;
 }
@@ -79,7 +72,6 @@ int
 _wc_draw_plan(_wc_scene_t S, const wc_problem_t P, wc_error_t err)
 {
     wc_plan_t R;
-    char * mu = NULL;
     int status;
 
     wc_plan_init(R);
@@ -97,22 +89,16 @@ _wc_draw_plan(_wc_scene_t S, const wc_problem_t P, wc_error_t err)
             status = ends_legend(S);
     }
     if (status == WC_OK)
-        status = _wc_scene_title(S, "Insertion plan: the goal set G_goal");
-    if (status == WC_OK && (mu = _wc_draw_friction(P)) == NULL)
-        status = WC_EINTERNAL;
-    if (status == WC_OK)
-        status = _wc_scene_caption(S, "%s, friction %s. G_goal (eq. 21) is "
-                                   "%s; the thick strokes are where pushing "
-                                   "with a frictionless finger seats the "
-                                   "part against all %ld fixels from any "
-                                   "contact state. G_goal %s within the "
-                                   "strongly stable set of the goal state "
-                                   "(eq. 25, exact semantics).%s",
-                                   _wc_draw_name(P), mu, !R->goal->empty
-                                   ? "not empty" : "empty", (long) P->n,
-                                   R->goal_in_strong ? "lies" : "does not lie",
-                                   R->has_push ? "" : no_shape);
-    free(mu);
+        status = _wc_draw_titles(S, P, "Insertion plan: the goal set G_goal",
+                                 ". G_goal (eq. 21) is %s; the thick strokes "
+                                 "are where pushing with a frictionless "
+                                 "finger seats the part against all %ld "
+                                 "fixels from any contact state. G_goal %s "
+                                 "within the strongly stable set of the goal "
+                                 "state (eq. 25, exact semantics).%s",
+                                 !R->goal->empty ? "not empty" : "empty",
+                                 (long) P->n, R->goal_in_strong ? "lies"
+                                 : "does not lie", R->has_push ? "" : no_shape);
     wc_plan_clear(R);
     return status;
 }

@@ -62,6 +62,15 @@ const char * _wc_draw_name(const wc_problem_t P);
    kinetic"; NULL when out of memory.  */
 char * _wc_draw_friction(const wc_problem_t P);
 
+/* The figure's title, and its caption: "NAME, friction MU" (P's), then
+   fmt formatted with the arguments.  */
+int _wc_draw_titles(_wc_scene_t S, const wc_problem_t P, const char * title,
+                    const char * fmt, ...)
+#ifdef __GNUC__
+    __attribute__((format(printf, 4, 5)))
+#endif
+    ;
+
 #ifdef __cplusplus
 }
 #endif

@@ -6,6 +6,8 @@
    Public License, version 2 or (at your option) any later version.  */
 
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -48,6 +50,32 @@ _wc_draw_friction(const wc_problem_t P)
     free(s);
     free(k);
     return w;
+}
+
+int
+_wc_draw_titles(_wc_scene_t S, const wc_problem_t P, const char * title,
+                const char * fmt, ...)
+{
+    const char * name = _wc_draw_name(P);
+    char * mu, * head = NULL;
+    va_list ap;
+    int status = _wc_scene_title(S, title);
+
+    if (status != WC_OK)
+        return status;
+    if ((mu = _wc_draw_friction(P)) == NULL
+        || (head = malloc(strlen(name) + strlen(mu) + 16)) == NULL)
+        status = WC_EINTERNAL;
+    else
+    {
+        sprintf(head, "%s, friction %s", name, mu);
+        va_start(ap, fmt);
+        status = _wc_scene_vcaption(S, head, fmt, ap);
+        va_end(ap);
+    }
+    free(head);
+    free(mu);
+    return status;
 }
 
 /* The bounding box of the shape, the fixels and the centre of mass.  */

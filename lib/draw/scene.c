@@ -219,19 +219,36 @@ _wc_scene_title(_wc_scene_t S, const char * text)
 }
 
 int
-_wc_scene_caption(_wc_scene_t S, const char * fmt, ...)
+_wc_scene_vcaption(_wc_scene_t S, const char * head, const char * fmt,
+                   va_list ap)
 {
-    va_list ap;
-    char * s;
+    char * r = vformat(fmt, ap), * s;
 
-    va_start(ap, fmt);
-    s = vformat(fmt, ap);
-    va_end(ap);
-    if (s == NULL)
+    if (r == NULL)
         return WC_EINTERNAL;
+    if ((s = malloc(strlen(head) + strlen(r) + 1)) == NULL)
+    {
+        free(r);
+        return WC_EINTERNAL;
+    }
+    strcpy(s, head);
+    strcat(s, r);
+    free(r);
     free(S->caption);
     S->caption = s;
     return WC_OK;
+}
+
+int
+_wc_scene_caption(_wc_scene_t S, const char * fmt, ...)
+{
+    va_list ap;
+    int status;
+
+    va_start(ap, fmt);
+    status = _wc_scene_vcaption(S, "", fmt, ap);
+    va_end(ap);
+    return status;
 }
 
 char *

@@ -18,6 +18,7 @@
 #ifndef WC_DRAW_SCENE_H
 #define WC_DRAW_SCENE_H
 
+#include <stdarg.h>
 #include <stdio.h>
 
 #include <flint/flint.h>
@@ -153,6 +154,14 @@ int _wc_scene_title(_wc_scene_t S, const char * text);
 int _wc_scene_caption(_wc_scene_t S, const char * fmt, ...)
 #ifdef __GNUC__
     __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+/* The caption: head (as it is), then fmt formatted with ap.  */
+int _wc_scene_vcaption(_wc_scene_t S, const char * head, const char * fmt,
+                       va_list ap)
+#ifdef __GNUC__
+    __attribute__((format(printf, 3, 0)))
 #endif
     ;
 

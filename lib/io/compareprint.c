@@ -157,7 +157,20 @@ text_reasons(FILE * out, const wc_cmp_rep_struct * C, const wc_cone_t W,
              double tol, const char * prefix, int * first)
 {
     const wc_cone_struct * F = C->cone;
+    const struct
+    {
+        const wc_cmp_vec * U;
+        slong n;
+        const char * what, * prefix;
+    }
+    un[4] = {
+        { C->exact_rays, C->nexact_rays, "missing ray", "r" },
+        { C->rays, C->nrays, "extra ray", "fr" },
+        { C->exact_facets, C->nexact_facets, "missing facet", "h" },
+        { C->facets, C->nfacets, "extra facet", "fh" }
+    };
     slong c;
+    int k;
 
 #define NEXT() (fputs(*first ? "" : "; ", out), *first = 0, \
                 fputs(prefix, out))
@@ -187,34 +200,15 @@ text_reasons(FILE * out, const wc_cmp_rep_struct * C, const wc_cone_t W,
         text_angle(out, C->hausdorff);
         fprintf(out, " > tol %g", tol);
     }
-    if ((c = count_unmatched(C->exact_rays, C->nexact_rays)) > 0)
-    {
-        NEXT();
-        fprintf(out, "%ld missing ray%s (", (long) c, c == 1 ? "" : "s");
-        text_unmatched(out, C->exact_rays, C->nexact_rays, "r", 0);
-        putc(')', out);
-    }
-    if ((c = count_unmatched(C->rays, C->nrays)) > 0)
-    {
-        NEXT();
-        fprintf(out, "%ld extra ray%s (", (long) c, c == 1 ? "" : "s");
-        text_unmatched(out, C->rays, C->nrays, "fr", 0);
-        putc(')', out);
-    }
-    if ((c = count_unmatched(C->exact_facets, C->nexact_facets)) > 0)
-    {
-        NEXT();
-        fprintf(out, "%ld missing facet%s (", (long) c, c == 1 ? "" : "s");
-        text_unmatched(out, C->exact_facets, C->nexact_facets, "h", 0);
-        putc(')', out);
-    }
-    if ((c = count_unmatched(C->facets, C->nfacets)) > 0)
-    {
-        NEXT();
-        fprintf(out, "%ld extra facet%s (", (long) c, c == 1 ? "" : "s");
-        text_unmatched(out, C->facets, C->nfacets, "fh", 0);
-        putc(')', out);
-    }
+    for (k = 0; k < 4; k++)
+        if ((c = count_unmatched(un[k].U, un[k].n)) > 0)
+        {
+            NEXT();
+            fprintf(out, "%ld %s%s (", (long) c, un[k].what,
+                    c == 1 ? "" : "s");
+            text_unmatched(out, un[k].U, un[k].n, un[k].prefix, 0);
+            putc(')', out);
+        }
 #undef NEXT
 }
 
@@ -359,33 +353,50 @@ json_rows_unit(FILE * out, const fmpz_mat_t A)
 static void
 json_rep(FILE * out, const wc_cmp_rep_struct * C)
 {
+    static const char * const vkey[4] = { "rays", "facets", "exact_rays",
+                                          "exact_facets" };
+    static const char * const dkey[3] = { "hausdorff", "exact_to_float",
+                                          "float_to_exact" };
     const wc_cone_struct * F = C->cone;
+    const struct
+    {
+        const wc_cmp_vec * U;
+        slong n;
+    }
+    vecs[4] = {
+        { C->rays, C->nrays }, { C->facets, C->nfacets },
+        { C->exact_rays, C->nexact_rays }, { C->exact_facets, C->nexact_facets }
+    };
+    const double dist[3] = { C->hausdorff, C->exact_to_float,
+                             C->float_to_exact };
     slong i;
+    int k;
 
     fprintf(out, "{\"representation\": \"%s\", \"line\": %ld, \"empty\": %s",
             rep_key(C->kind), C->line, F->empty ? "true" : "false");
     if (!F->empty)
         fprintf(out, ", \"dim\": %ld, \"lineality_dim\": %ld", (long) F->dim,
                 (long) F->lineality_dim);
-    fputs(", \"rays\": ", out);
-    json_vecs(out, C->rays, C->nrays, "direction", "exact", "extra", 1, 1);
-    fputs(", \"facets\": ", out);
-    json_vecs(out, C->facets, C->nfacets, "normal", "exact", "extra", 0, 1);
-    fputs(", \"exact_rays\": ", out);
-    json_vecs(out, C->exact_rays, C->nexact_rays, "direction", "float",
-              "missing", 1, 0);
-    fputs(", \"exact_facets\": ", out);
-    json_vecs(out, C->exact_facets, C->nexact_facets, "normal", "float",
-              "missing", 0, 0);
+    for (k = 0; k < 4; k++)
+    {
+        /* the float cone's vectors first (each extra or not), then the
+           exact cone's (each missing or not); rays, then facets */
+        int rays = k % 2 == 0, foreign = k < 2;
+
+        fprintf(out, ", \"%s\": ", vkey[k]);
+        json_vecs(out, vecs[k].U, vecs[k].n, rays ? "direction" : "normal",
+                  foreign ? "exact" : "float", foreign ? "extra" : "missing",
+                  rays, foreign);
+    }
     fputs(", \"redundant_lines\": [", out);
     for (i = 0; i < C->nredundant; i++)
         fprintf(out, "%s%ld", i ? ", " : "", C->redundant[i]);
-    fputs("], \"hausdorff\": ", out);
-    json_double(out, C->hausdorff);
-    fputs(", \"exact_to_float\": ", out);
-    json_double(out, C->exact_to_float);
-    fputs(", \"float_to_exact\": ", out);
-    json_double(out, C->float_to_exact);
+    putc(']', out);
+    for (k = 0; k < 3; k++)
+    {
+        fprintf(out, ", \"%s\": ", dkey[k]);
+        json_double(out, dist[k]);
+    }
     fputs(", \"differences\": ", out);
     json_differences(out, C->differs);
     putc('}', out);

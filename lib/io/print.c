@@ -48,6 +48,9 @@ json_rows(FILE * out, const fmpz_mat_t A)
 int
 wc_cone_fprint_json(FILE * out, const wc_cone_t C)
 {
+    static const char * const key[4] = { "inequalities", "equalities",
+                                         "rays", "lines" };
+    const fmpz_mat_struct * rows[4] = { C->ineqs, C->eqs, C->rays, C->lines };
     slong f, i;
 
     if (C->empty)
@@ -55,15 +58,13 @@ wc_cone_fprint_json(FILE * out, const wc_cone_t C)
         fputs("{\"empty\": true}", out);
         return _wc_fprint_done(out);
     }
-    fprintf(out, "{\"empty\": false, \"dim\": %ld, \"lineality_dim\": %ld, "
-            "\"inequalities\": ", (long) C->dim, (long) C->lineality_dim);
-    json_rows(out, C->ineqs);
-    fputs(", \"equalities\": ", out);
-    json_rows(out, C->eqs);
-    fputs(", \"rays\": ", out);
-    json_rows(out, C->rays);
-    fputs(", \"lines\": ", out);
-    json_rows(out, C->lines);
+    fprintf(out, "{\"empty\": false, \"dim\": %ld, \"lineality_dim\": %ld",
+            (long) C->dim, (long) C->lineality_dim);
+    for (f = 0; f < 4; f++)
+    {
+        fprintf(out, ", \"%s\": ", key[f]);
+        json_rows(out, rows[f]);
+    }
     fputs(", \"faces\": [", out);
     for (f = 0; f < C->nfaces; f++)
     {
