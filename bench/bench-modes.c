@@ -26,7 +26,6 @@
 
 #include <config.h>
 
-#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -253,23 +252,6 @@ time_brute(char *** modes, slong * count, const wc_problem_t P,
     return t / reps;
 }
 
-/* Least-squares slope of log y against log x over points [lo, hi).  */
-static double
-slope(const double * x, const double * y, slong lo, slong hi)
-{
-    double sx = 0, sy = 0, sxx = 0, sxy = 0, k = (double) (hi - lo);
-    slong i;
-
-    for (i = lo; i < hi; i++)
-    {
-        sx += log(x[i]);
-        sy += log(y[i]);
-        sxx += log(x[i]) * log(x[i]);
-        sxy += log(x[i]) * log(y[i]);
-    }
-    return (k * sxy - sx * sy) / (k * sxx - sx * sx);
-}
-
 int
 main(int argc, char ** argv)
 {
@@ -370,10 +352,11 @@ main(int argc, char ** argv)
     }
     printf("growth exponent of enumerate time (least-squares slope of log "
            "time vs log n): n = 10..%ld: %.2f", (long) xs[npts - 1],
-           slope(xs, ys, 0, npts));
+           wcbench_slope(xs, ys, npts));
     if (first1000 >= 0 && npts - first1000 >= 2)
         printf("; n = 1000..%ld: %.2f", (long) xs[npts - 1],
-               slope(xs, ys, first1000, npts));
+               wcbench_slope(xs + first1000, ys + first1000,
+                             npts - first1000));
     printf("\n");
     if (maxbrute >= 8)
         printf("modes speed-up over brute force at n=8: %.0f x\n", speedup8);

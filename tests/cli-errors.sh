@@ -168,7 +168,8 @@ floor() {
     awk -v n="$1" -v s="$2" 'BEGIN { for (i = 1; i <= n; i++) print "fixel " i " 0 normal 0 1 " s }'
 }
 floor 101 touching >"$tmp/t101.wc"
-floor 501 near >"$tmp/n501.wc"
+floor 151 near >"$tmp/n151.wc"
+floor 1001 touching >"$tmp/t1001.wc"
 floor 2001 near >"$tmp/n2001.wc"
 floor 10001 near >"$tmp/n10001.wc"
 limit() { # limit NAME LINE:COL: MESSAGE -- ARGS...
@@ -182,8 +183,10 @@ limit classify "$tmp/t101.wc:105:1: classify handles at most 100 touching fixels
     classify "$tmp/t101.wc" 0 -1 0
 limit stability "$tmp/t101.wc:105:1: stability handles at most 100 touching fixels (this is touching fixel 101)" \
     stability "$tmp/t101.wc"
-limit modes "$tmp/n501.wc:505:1: mode enumeration handles at most 500 fixels (this is fixel 501)" \
-    modes "$tmp/n501.wc"
+limit modes "$tmp/t1001.wc:1005:1: mode enumeration handles at most 1000 fixels (this is fixel 1001)" \
+    modes "$tmp/t1001.wc"
+limit modes-near "$tmp/n151.wc:155:1: mode enumeration handles at most 150 near fixels (this is near fixel 151)" \
+    modes "$tmp/n151.wc"
 limit cone "$tmp/n2001.wc:2005:1: a wrench cone handles at most 2000 fixels (this is fixel 2001)" \
     cone "$tmp/n2001.wc" u
 limit compare "$tmp/n2001.wc:2005:1: a wrench cone handles at most 2000 fixels (this is fixel 2001)" \
@@ -225,21 +228,29 @@ expect_status read-directory 1
 expect_stderr read-directory "wrenchcone: $tmp: read error: Is a directory"
 
 # Out of memory: one line on stderr, exit 3, nothing on stdout -- never
-# FLINT's abort with its message on stdout.  500 fixels in general
-# position have about 125,000 feasible modes: far more than 50 MB.
+# FLINT's abort with its message on stdout.  Every limit keeps a command's
+# memory in the megabytes, except the list of modes that classify gives
+# on request: with --max-modes=0, a wrench that 40 fixels on a floor
+# hold is held by exponentially many strings, far more than 50 MB.
 # (Sanitizers reserve terabytes of address space: no ulimit -v there.)
 if [ -z "${WC_SAN:-}" ]; then
-    printf 'mass 1\ninertia 1\ncom 0 1\nfriction 1/2\n' >"$tmp/g500.wc"
-    awk 'BEGIN { for (i = 1; i <= 500; i++) print "fixel " i " " (i * i % 97) " normal " (i % 7 - 3) " 5 near" }' >>"$tmp/g500.wc"
-    status=$( (ulimit -v 50000 && "$WRENCHCONE" modes "$tmp/g500.wc" >"$tmp/out" 2>"$tmp/err"); echo $?)
+    floor 40 touching >"$tmp/t40.wc"
+    status=$( (ulimit -v 50000 && "$WRENCHCONE" classify --max-modes=0 "$tmp/t40.wc" 0 -1 -10 >"$tmp/out" 2>"$tmp/err"); echo $?)
     expect_status out-of-memory 3
     expect_stderr out-of-memory "wrenchcone: out of memory"
 fi
 
-# At the limit itself the same layout runs.
-floor 500 near >"$tmp/n500.wc"
-run /dev/null modes "$tmp/n500.wc"
-[ "$status" -eq 0 ] && [ -s "$tmp/out" ] || fail limit-modes-500 "exit status $status at 500 fixels"
+# At the limits themselves the same layouts run: 150 near fixels, 1000
+# fixels, 100 touching fixels.
+floor 150 near >"$tmp/n150.wc"
+run /dev/null modes "$tmp/n150.wc"
+[ "$status" -eq 0 ] && [ -s "$tmp/out" ] || fail limit-modes-near "exit status $status at 150 near fixels"
+floor 1000 touching >"$tmp/t1000.wc"
+run /dev/null modes "$tmp/t1000.wc"
+[ "$status" -eq 0 ] && [ -s "$tmp/out" ] || fail limit-modes-1000 "exit status $status at 1000 fixels"
+floor 100 touching >"$tmp/t100.wc"
+run /dev/null classify "$tmp/t100.wc" 0 -1 -10
+[ "$status" -eq 0 ] && [ -s "$tmp/out" ] || fail limit-classify-100 "exit status $status at 100 touching fixels"
 
 if [ "$failures" -ne 0 ]; then
     printf '%s: %d failure(s)\n' "$0" "$failures"

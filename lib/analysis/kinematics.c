@@ -143,6 +143,27 @@ wc_modes_clear(wc_modes_t M)
     wc_modes_init(M);
 }
 
+/* WC_OK when P has at most WC_MODES_MAX_NEAR near fixels, else
+   WC_EINPUT located at the first near fixel beyond it (in the words of
+   wc_problem_check_fixels).  */
+static int
+check_near(const wc_problem_t P, wc_error_t err)
+{
+    slong i, count = 0;
+
+    for (i = 0; i < P->n; i++)
+    {
+        const wc_fixel_struct * f = P->fixels + i;
+
+        if (f->state == WC_NEAR && ++count > WC_MODES_MAX_NEAR)
+            return wc_error_set(err, WC_EINPUT, P->file, f->line, f->col,
+                                "mode enumeration handles at most %ld near "
+                                "fixels (this is near fixel %ld)",
+                                (long) WC_MODES_MAX_NEAR, (long) count);
+    }
+    return WC_OK;
+}
+
 int
 wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err)
 {
@@ -151,6 +172,8 @@ wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err)
     if (status == WC_OK)
         status = wc_problem_check_fixels(P, WC_MODES_MAX_FIXELS, 0,
                                          "mode enumeration", err);
+    if (status == WC_OK)
+        status = check_near(P, err);
     if (status == WC_OK)
         status = _wc_modes_walk(M, P, err);
     return status;

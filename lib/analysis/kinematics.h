@@ -65,9 +65,13 @@ void wc_modes_clear(wc_modes_t M);
    witness is a point of the first face mapping to it in the walk of the
    whole arrangement (modeswalk.c).  M may hold an earlier result (it is
    replaced).  Returns WC_OK (M filled) or WC_EINPUT when
-   wc_problem_check fails or P has more than WC_MODES_MAX_FIXELS fixels
-   (the output alone can be O(n^3) bytes).  */
-#define WC_MODES_MAX_FIXELS 500
+   wc_problem_check fails, P has more than WC_MODES_MAX_FIXELS fixels or
+   more than WC_MODES_MAX_NEAR of them near.  The m near fixels bound
+   the output: O(m^2 + n) modes of n letters (a near fixel's plane may
+   cross K anywhere, a touching fixel's tangent plane only K's facet of
+   that fixel), m^2 n bytes where every fixel is near.  */
+#define WC_MODES_MAX_FIXELS 1000
+#define WC_MODES_MAX_NEAR 150
 int wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err);
 
 /* The certificate of one mode: either a witness twist (primitive
