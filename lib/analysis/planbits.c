@@ -240,3 +240,19 @@ _wc_cone_key_cells(ulong * out, const wc_cone_key * K, wc_cell_bits * X,
     if (!by_faces(out, X->cand, K, X, A))
         by_lattice(out, X->cand, K, X, A);
 }
+
+void
+_wc_cone_keys_union(ulong * acc, const wc_cone_key * K, slong count,
+                    const int * skip, wc_cell_bits * X, const wc_cells_t A,
+                    ulong * buf)
+{
+    slong k, w;
+
+    for (k = 0; k < count; k++)
+        if (skip == NULL || skip[k] == 0)
+        {
+            _wc_cone_key_cells(buf, K + k, X, A);
+            for (w = 0; w < X->words; w++)
+                acc[w] |= buf[w];
+        }
+}

@@ -212,6 +212,13 @@ key_init(wc_cone_key * K, const wc_cone_struct * C, const wc_cells_t A)
     K->orient = malloc(K->nf + K->ne + 1);
     K->top = !C->empty && C->nfaces > 0 && C->faces[C->nfaces - 1].included;
     K->usable = !C->empty;
+    if (K->plane == NULL || K->orient == NULL)
+    {
+        /* out of memory: every cell goes through the face lattice */
+        K->nf = K->ne = 0;
+        K->usable = 0;
+        return;
+    }
     for (i = 0; i < K->nf + K->ne; i++)
     {
         const fmpz * h = i < K->nf ? C->ineqs->rows[i]
@@ -265,6 +272,8 @@ _wc_cone_keys_init(const wc_cone_struct * C, slong count, const wc_cells_t A)
     wc_cone_key * K = malloc(sizeof(wc_cone_key) * (count + 1));
     slong i;
 
+    if (K == NULL)
+        return NULL;
     for (i = 0; i < count; i++)
         key_init(K + i, C + i, A);
     return K;

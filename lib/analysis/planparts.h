@@ -113,6 +113,13 @@ void _wc_cell_bits_clear(wc_cell_bits * X);
 void _wc_cone_key_cells(ulong * out, const wc_cone_key * K,
                         wc_cell_bits * X, const wc_cells_t A);
 
+/* acc (X->words words) |= the cells of A in any of the count cones of
+   K, leaving out cone k when skip != NULL and skip[k] != 0; buf is
+   X->words words of scratch.  */
+void _wc_cone_keys_union(ulong * acc, const wc_cone_key * K, slong count,
+                         const int * skip, wc_cell_bits * X,
+                         const wc_cells_t A, ulong * buf);
+
 /* The complete plan's transition graph (plangraph.c).  States are bit
    masks; n <= 6, so a state's successors fit in one ulong.  */
 typedef void (* wc_plan_edge_fn)(void * ctx, ulong from, ulong to,

@@ -82,7 +82,6 @@ cones_union(ulong ** inside, const wc_cone_key * K, slong count,
 {
     wc_cell_bits X;
     ulong * buf = NULL;
-    slong k, w;
     int ok = _wc_cell_bits_init(&X, A);
 
     if (ok)
@@ -91,12 +90,8 @@ cones_union(ulong ** inside, const wc_cone_key * K, slong count,
         *inside = calloc(X.words + 1, sizeof(ulong));
     }
     ok = ok && buf != NULL && *inside != NULL && K != NULL;
-    for (k = 0; k < count && ok; k++)
-    {
-        _wc_cone_key_cells(buf, K + k, &X, A);
-        for (w = 0; w < X.words; w++)
-            (*inside)[w] |= buf[w];
-    }
+    if (ok)
+        _wc_cone_keys_union(*inside, K, count, NULL, &X, A, buf);
     free(buf);
     _wc_cell_bits_clear(&X);
     return ok ? WC_OK : wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,

@@ -26,6 +26,7 @@
 #include "exact/vec3.h"
 #include "analysis/kinematics.h"
 #include "analysis/stabmodel.h"
+#include "analysis/planparts.h"
 #include "analysis/stability.h"
 
 void
@@ -347,15 +348,49 @@ stability_cones(wc_stability_t S, const _wc_stab_model * m,
     return status;
 }
 
-/* The cells of all the cones' planes; each set is a union of cells,
-   decided at each cell's point.  */
+/* Bit i of the bitset b.  */
+#define CELL_BIT(b, i) (((b)[(i) / FLINT_BITS] >> ((i) % FLINT_BITS)) & 1)
+
+/* weak, moving, paper (words words each) := the cells in the weak cone,
+   in a moving cone, and in eq. 19's union (the moving cones that are not
+   rotation faces, then the union's own cones); a cone at a time over
+   every cell, from the cells' signs (planbits.c).  Returns 0 when out of
+   memory.  */
+static int
+sets_bits(ulong * weak, ulong * moving, ulong * paper,
+          const wc_stability_struct * S, wc_cell_bits * X, ulong * buf)
+{
+    const wc_cells_struct * A = S->cells;
+    wc_cone_key * KW = _wc_cone_keys_init(S->weak, 1, A);
+    wc_cone_key * KM = _wc_cone_keys_init(S->moving, S->nmoving, A);
+    wc_cone_key * KU = _wc_cone_keys_init(S->paper_union, S->nunion, A);
+    int ok = KW != NULL && KM != NULL && KU != NULL;
+
+    if (ok)
+    {
+        _wc_cone_keys_union(weak, KW, 1, NULL, X, A, buf);
+        _wc_cone_keys_union(moving, KM, S->nmoving, NULL, X, A, buf);
+        _wc_cone_keys_union(paper, KM, S->nmoving, S->moving_rot, X, A,
+                            buf);
+        _wc_cone_keys_union(paper, KU, S->nunion, NULL, X, A, buf);
+    }
+    _wc_cone_keys_clear(KW, 1);
+    _wc_cone_keys_clear(KM, S->nmoving);
+    _wc_cone_keys_clear(KU, S->nunion);
+    return ok;
+}
+
+/* The cells of all the cones' planes; each set is a union of cells.  A
+   cell is in the exact set when it is in the weak cone and in no moving
+   cone, and in the paper's set when it is in none of eq. 19's cones.  */
 static int
 stability_sets(wc_stability_t S, wc_error_t err)
 {
     fmpz_mat_t planes;
-    slong i, k, np = 0;
-    int status, nonzero, * in_exact, * in_paper;
-    fmpq g[3];
+    slong i, words, np = 0;
+    int status, ok, nonzero, * in_exact = NULL, * in_paper = NULL;
+    ulong * bits = NULL;
+    wc_cell_bits X;
 
     fmpz_mat_init(planes, 0, 3);
     collect_planes(planes, &np, S->weak);
@@ -367,48 +402,58 @@ stability_sets(wc_stability_t S, wc_error_t err)
     fmpz_mat_clear(planes);
     if (status != WC_OK)
         return status;
-    in_exact = flint_malloc(sizeof(int) * (S->cells->count + 1));
-    in_paper = flint_malloc(sizeof(int) * (S->cells->count + 1));
-    for (k = 0; k < 3; k++)
-        fmpq_init(g + k);
+    _wc_tick("cells of the sets", 0, S->cells->count);
+    ok = _wc_cell_bits_init(&X, S->cells);
+    words = X.words;
+    if (ok)
+    {
+        in_exact = malloc(sizeof(int) * (S->cells->count + 1));
+        in_paper = malloc(sizeof(int) * (S->cells->count + 1));
+        bits = calloc((size_t) 4 * words + 1, sizeof(ulong));
+    }
+    ok = ok && in_exact != NULL && in_paper != NULL && bits != NULL
+        && sets_bits(bits, bits + words, bits + 2 * words, S, &X,
+                     bits + 3 * words);
+    _wc_cell_bits_clear(&X);
     S->paper_in_weak = 1;
     S->differ = 0;
     nonzero = 0;
-    for (i = 0; i < S->cells->count; i++)
+    for (i = 0; ok && i < S->cells->count; i++)
     {
-        int w, z;
+        int w = CELL_BIT(bits, i), z;
+        const fmpz * x = WC_ROW(S->cells->point, i);
 
-        _wc_tick("cells of the sets", i, S->cells->count);
-        _fmpq_vec_set_fmpz_vec(g, WC_ROW(S->cells->point, i), 3);
-        w = wc_cone_contains(S->weak, g);
-        in_exact[i] = w && !in_exact_moving(S, g);
-        in_paper[i] = !in_paper_union(S, g);
+        in_exact[i] = w && !CELL_BIT(bits + words, i);
+        in_paper[i] = !CELL_BIT(bits + 2 * words, i);
         if (in_paper[i] && !w)
             S->paper_in_weak = 0;
         /* The origin is strongly stable by definition and lies in every
            W(x): it differs whenever a fixel touches, which says nothing,
            so a nonzero witness is preferred.  */
-        z = fmpq_is_zero(g) && fmpq_is_zero(g + 1) && fmpq_is_zero(g + 2);
+        z = _fmpz_vec_is_zero(x, 3);
         if (in_exact[i] != in_paper[i] && (!S->differ || (!nonzero && !z)))
         {
             S->differ = 1;
             nonzero = !z;
-            _wc_qvec_set(S->diff_g, g, 3);
+            _fmpq_vec_set_fmpz_vec(S->diff_g, x, 3);
             S->diff_in_exact = in_exact[i];
         }
     }
     _wc_tick("cells of the sets", S->cells->count, S->cells->count);
     S->diff_origin_only = S->differ && !nonzero;
-    if ((status = wc_set_from_cells(S->strong, S->cells, in_exact, err))
+    if (!ok)
+        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                              "out of memory (%ld cells)",
+                              (long) S->cells->count);
+    else if ((status = wc_set_from_cells(S->strong, S->cells, in_exact, err))
         == WC_OK
         && (status = wc_set_from_cells(S->strong_paper, S->cells, in_paper,
                                        err)) == WC_OK
         && (status = wc_set_merge(S->strong, S->cells, err)) == WC_OK)
         status = wc_set_merge(S->strong_paper, S->cells, err);
-    for (k = 0; k < 3; k++)
-        fmpq_clear(g + k);
-    flint_free(in_exact);
-    flint_free(in_paper);
+    free(bits);
+    free(in_exact);
+    free(in_paper);
     return status;
 }
 
