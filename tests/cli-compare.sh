@@ -344,4 +344,27 @@ for pm in section4.wc:na section4.wc:ns section4.wc:sa section4.wc:ma \
     done
 done
 
+# The cost bound: a cone the near-linear conversion does not take (here a
+# wedge times a line: lineality 1) may have at most 1000 rows, refused
+# before any work at the representation's first line (1000 such rows take
+# seconds, so they are not run here); 1001 rays of a pointed cone are
+# compared as usual.
+big() {
+    awk -v n="$1" -v line="$2" 'BEGIN {
+        print "V-representation"
+        if (line) print "linearity 1 1"
+        print "begin"; print n " 4 rational"
+        if (line) { print "0 0 0 1"; n-- }
+        for (i = 1; i <= n; i++) print 0, i - 500, 1000 + (i * i) % 997, (line ? 0 : 1)
+        print "end" }'
+}
+big 1001 1 > "$tmp/wedge1001.ext"
+big 1001 0 > "$tmp/fan1001.ext"
+run wedge-1001 1 "$D/section4.wc" na "$tmp/wedge1001.ext"
+if [ -s "$tmp/out" ] || ! grep -q "^wrenchcone: .*wedge1001.ext:1:1: this cone has 1001 rows; .* may have at most 1000\$" "$tmp/err"; then
+    fail wedge-1001 "expected one located refusal, nothing on stdout"
+    cat "$tmp/err"
+fi
+run fan-1001 4 "$D/section4.wc" na "$tmp/fan1001.ext"
+
 [ "$failures" -eq 0 ]

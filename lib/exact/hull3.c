@@ -543,3 +543,84 @@ _wc_hull3_h_to_v(fmpq_mat_t rays, fmpq_mat_t lines, const fmpq_mat_t E,
     fmpz_mat_clear(G);
     return status;
 }
+
+/* 1 when every row of A lies strictly on the positive side of the sum of
+   the rows: then pos(A) is pointed, every row makes an acute angle with
+   that sum, and the fan certifies it (its start, the row farthest from
+   the sum, is then an extreme ray).  O(k), no integer conversion.  */
+static int
+acute_to_sum(const fmpq_mat_t A)
+{
+    fmpz_mat_t Z;
+    fmpz * q = _fmpz_vec_init(3);
+    fmpz_t d;
+    slong i;
+    int ok = rows_of(A) > 0;
+
+    fmpz_init(d);
+    fmpz_mat_init(Z, rows_of(A), 3);
+    /* each row times a positive integer: the same directions */
+    fmpq_mat_get_fmpz_mat_rowwise(Z, NULL, A);
+    for (i = 0; i < rows_of(A); i++)
+        _fmpz_vec_add(q, q, WC_ROW(Z, i), 3);
+    for (i = 0; i < rows_of(A) && ok; i++)
+    {
+        _fmpz_vec_dot(d, q, WC_ROW(Z, i), 3);
+        ok = fmpz_sgn(d) > 0;
+    }
+    fmpz_mat_clear(Z);
+    _fmpz_vec_clear(q, 3);
+    fmpz_clear(d);
+    return ok;
+}
+
+int
+_wc_hull3_is_fast(const fmpq_mat_t rows, const fmpq_mat_t lin, int h)
+{
+    fmpz_mat_t G, W;
+    slong k = 0, re = 0;
+    int res = 1;
+
+    if (rows_of(lin) == 0 && acute_to_sum(rows))
+        return 1;
+
+    if (h && rows_of(lin) > 0)
+    {
+        fmpz_mat_init(G, 0, 3);
+        if (!_wc_hull3_generators(G, &k, NULL, lin))
+            res = -1;
+        else if (k > 0)
+        {
+            fmpz_mat_window_init(W, G, 0, 0, k, 3);
+            re = fmpz_mat_rank(W);
+            fmpz_mat_window_clear(W);
+        }
+        fmpz_mat_clear(G);
+        if (res < 0 || re >= 2)
+            return res;             /* a line or the origin: O(k) */
+    }
+    fmpz_mat_init(G, 0, 3);
+    if (!_wc_hull3_generators(G, &k, rows, lin))
+        res = -1;
+    else if (k > 0)
+    {
+        fmpz_mat_window_init(W, G, 0, 0, k, 3);
+        if (fmpz_mat_rank(W) < 3)
+            res = 1;                /* rank 2 or less: O(k) */
+        else if (re == 1)
+            res = 0;                /* in a plane, the polar not pointed */
+        else
+        {
+            _wc_fan3_t F;
+            int r;
+
+            _wc_fan3_init(F);
+            r = _wc_fan3(F, WC_ROW(G, 0), k);
+            _wc_fan3_clear(F);
+            res = r == WC_FAN3_NOMEM ? -1 : r != WC_FAN3_OTHER;
+        }
+        fmpz_mat_window_clear(W);
+    }
+    fmpz_mat_clear(G);
+    return res;
+}
