@@ -102,8 +102,9 @@ gmp_number(mpq_t q, const char * t, size_t n)
         i++;
         if (i < n && (t[i] == '+' || t[i] == '-'))
             eneg = t[i++] == '-';
+        /* past the bound, the digits are skipped, not accumulated */
         for (e0 = i; i < n && t[i] >= '0' && t[i] <= '9'; i++)
-            if ((e = 10 * e + (t[i] - '0')) > WC_FOREIGN_MAX_EXPONENT)
+            if (ok && (e = 10 * e + (t[i] - '0')) > WC_FOREIGN_MAX_EXPONENT)
                 ok = 0;
         if (i == e0)
             ok = 0;
