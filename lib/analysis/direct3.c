@@ -61,24 +61,6 @@ ws_struct;
 /* The scratch entry of the helpers below (t[4], t[5] hold an edge).  */
 #define SCRATCH(w) ((w)->t + 2)
 
-/* The sign of a . b, in 128-bit integers when no entry is a GMP integer
-   (each product below 2^124, the sum below 2^126); t is scratch.  */
-static int
-dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t)
-{
-#ifdef __SIZEOF_INT128__
-    if (!COEFF_IS_MPZ(a[0]) && !COEFF_IS_MPZ(a[1]) && !COEFF_IS_MPZ(a[2])
-        && !COEFF_IS_MPZ(b[0]) && !COEFF_IS_MPZ(b[1]) && !COEFF_IS_MPZ(b[2]))
-    {
-        __int128 s = (__int128) a[0] * b[0] + (__int128) a[1] * b[1]
-            + (__int128) a[2] * b[2];
-
-        return (s > 0) - (s < 0);
-    }
-#endif
-    return _wc_zvec3_dot_sgn(a, b, t);
-}
-
 /* x := x / content(x).  */
 static void
 primitive(fmpz * x, fmpz_t g)
@@ -250,7 +232,7 @@ eq_rank(ws_struct * w, fmpz * u)
             if (r == 2)
                 primitive(u, SCRATCH(w));
         }
-        else if (dot_sgn(u, x, SCRATCH(w)) != 0)
+        else if (_wc_zvec3_dot_sgn_fast(u, x, SCRATCH(w)) != 0)
             r = 3;
     }
     return r;
@@ -266,8 +248,8 @@ on_line(ws_struct * w, fmpz * u, int * apex)
 
     for (i = 0; i < w->nh + w->ns; i++)
     {
-        s = dot_sgn(i < w->nh ? w->H + 3 * i
-                              : w->S + 3 * (i - w->nh), u, SCRATCH(w));
+        s = _wc_zvec3_dot_sgn_fast(i < w->nh ? w->H + 3 * i
+                                   : w->S + 3 * (i - w->nh), u, SCRATCH(w));
         pos |= s > 0;
         neg |= s < 0;
     }
@@ -279,7 +261,7 @@ on_line(ws_struct * w, fmpz * u, int * apex)
     if (pos)
         _fmpz_vec_neg(u, u, 3);                 /* the ray is -u */
     for (i = 0; i < w->ns; i++)
-        if (dot_sgn(w->S + 3 * i, u, SCRATCH(w)) >= 0)
+        if (_wc_zvec3_dot_sgn_fast(w->S + 3 * i, u, SCRATCH(w)) >= 0)
             return V_EMPTY;
     return V_RAY;
 }
@@ -370,14 +352,14 @@ faces_holding(wc_cone_t W, const fmpz * y, fmpz_t t)
     if (T == NULL)
         return 0;
     for (j = 0; j < m; j++)
-        if (dot_sgn(WC_ROW(W->ineqs, j), y, t) == 0)
+        if (_wc_zvec3_dot_sgn_fast(WC_ROW(W->ineqs, j), y, t) == 0)
             T[nt++] = j;
     for (i = 0; i < k; i++)
     {
         in[i] = 1;
         for (j = 0; j < nt && in[i]; j++)
-            in[i] = dot_sgn(WC_ROW(W->ineqs, T[j]),
-                                      WC_ROW(W->rays, i), t) == 0;
+            in[i] = _wc_zvec3_dot_sgn_fast(WC_ROW(W->ineqs, T[j]),
+                                           WC_ROW(W->rays, i), t) == 0;
         size += in[i];
     }
     for (f = 0; f < W->nfaces; f++)
@@ -412,7 +394,7 @@ plane_of_rows(ws_struct * w, fmpz * u)
     if (_fmpz_vec_is_zero(u, 3))
         goto done;
     for (i = 0; i < w->nh; i++)
-        if (dot_sgn(u, w->H + 3 * i, t) != 0)
+        if (_wc_zvec3_dot_sgn_fast(u, w->H + 3 * i, t) != 0)
         {
             r = -1;
             goto done;
@@ -423,19 +405,19 @@ plane_of_rows(ws_struct * w, fmpz * u)
         const fmpz * x = w->H + 3 * i;
 
         _wc_zvec3_cross(c, h, x);
-        s = dot_sgn(u, c, t);
+        s = _wc_zvec3_dot_sgn_fast(u, c, t);
         if (s == 0)
-            opp |= dot_sgn(h, x, t) < 0;
+            opp |= _wc_zvec3_dot_sgn_fast(h, x, t) < 0;
         else if (s > 0 && A != NULL)
         {
             _wc_zvec3_cross(c, A, x);
-            if (dot_sgn(u, c, t) > 0)
+            if (_wc_zvec3_dot_sgn_fast(u, c, t) > 0)
                 A = x;
         }
         else if (s < 0 && B != NULL)
         {
             _wc_zvec3_cross(c, B, x);
-            if (dot_sgn(u, c, t) < 0)
+            if (_wc_zvec3_dot_sgn_fast(u, c, t) < 0)
                 B = x;
         }
         else if (s > 0)
@@ -446,7 +428,7 @@ plane_of_rows(ws_struct * w, fmpz * u)
     if (A != NULL && B != NULL)
     {
         _wc_zvec3_cross(c, A, B);
-        r = opp || dot_sgn(u, c, t) > 0;
+        r = opp || _wc_zvec3_dot_sgn_fast(u, c, t) > 0;
     }
 
 done:

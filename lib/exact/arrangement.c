@@ -236,29 +236,11 @@ set_sign(walker * W, slong q, int s)
     }
 }
 
-/* sign(a . b): in 128-bit words when every entry is a word fmpz (below
-   2^62: each product below 2^124, the sum below 2^126), else in fmpz.  */
-static int
-dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t)
-{
-#ifdef __SIZEOF_INT128__
-    if (!COEFF_IS_MPZ(a[0]) && !COEFF_IS_MPZ(a[1]) && !COEFF_IS_MPZ(a[2])
-        && !COEFF_IS_MPZ(b[0]) && !COEFF_IS_MPZ(b[1]) && !COEFF_IS_MPZ(b[2]))
-    {
-        __int128 s = (__int128) a[0] * b[0] + (__int128) a[1] * b[1]
-            + (__int128) a[2] * b[2];
-
-        return (s > 0) - (s < 0);
-    }
-#endif
-    return _wc_zvec3_dot_sgn(a, b, t);
-}
-
 /* The sign of plane q at x.  */
 static void
 update_sign(walker * W, slong q, const fmpz * x)
 {
-    set_sign(W, q, dot_sgn(WC_ROW(W->A->planes, q), x, W->t));
+    set_sign(W, q, _wc_zvec3_dot_sgn_fast(WC_ROW(W->A->planes, q), x, W->t));
 }
 
 static int

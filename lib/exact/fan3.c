@@ -59,25 +59,6 @@ _wc_fan3_clear(_wc_fan3_t F)
     _wc_fan3_init(F);
 }
 
-/* Small entries (no GMP integer behind them): sign a . b in 128-bit
-   integers, exactly (each product is below 2^124, the sum below 2^126);
-   otherwise in fmpz.  */
-static int
-dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t)
-{
-#ifdef __SIZEOF_INT128__
-    if (!COEFF_IS_MPZ(a[0]) && !COEFF_IS_MPZ(a[1]) && !COEFF_IS_MPZ(a[2])
-        && !COEFF_IS_MPZ(b[0]) && !COEFF_IS_MPZ(b[1]) && !COEFF_IS_MPZ(b[2]))
-    {
-        __int128 s = (__int128) a[0] * b[0] + (__int128) a[1] * b[1]
-            + (__int128) a[2] * b[2];
-
-        return (s > 0) - (s < 0);
-    }
-#endif
-    return _wc_zvec3_dot_sgn(a, b, t);
-}
-
 #define SMALL40(x) (!COEFF_IS_MPZ(x) && (x) < (WORD(1) << 40) \
                     && (x) > -(WORD(1) << 40))
 
@@ -124,7 +105,7 @@ qx_sgn(fan_ctx * c, slong a, slong b)
         return (s > 0) - (s < 0);
     }
 #endif
-    return dot_sgn(c->qx + 3 * a, GV(c, b), c->t);
+    return _wc_zvec3_dot_sgn_fast(c->qx + 3 * a, GV(c, b), c->t);
 }
 
 /* The 128-bit copy of q x g_i when every entry of q has at most 62 bits,
@@ -199,7 +180,7 @@ static int
 inner(fan_ctx * c, slong x, slong y, fmpz * w)
 {
     _wc_zvec3_cross(w, GV(c, x), GV(c, y));
-    return dot_sgn(w, c->qx + 3 * y, c->t) > 0;
+    return _wc_zvec3_dot_sgn_fast(w, c->qx + 3 * y, c->t) > 0;
 }
 
 /* The generator of x[0..p) that makes the largest angle with q (the first
@@ -276,7 +257,7 @@ spans(const fmpz * G, slong k, fmpz * w, fmpz_t t)
             break;
     }
     for (i++; i < k; i++)
-        if (dot_sgn(w, G + 3 * i, t) != 0)
+        if (_wc_zvec3_dot_sgn_fast(w, G + 3 * i, t) != 0)
             return 1;
     return 0;
 }
@@ -303,7 +284,7 @@ space_by_triple(fan_ctx * c, const fmpz * q, const slong * P, slong p,
     slong n = 0, i, j;
 
     for (i = 0; i < p; i++)
-        if (dot_sgn(q, GV(c, P[i]), c->t) < 0)
+        if (_wc_zvec3_dot_sgn_fast(q, GV(c, P[i]), c->t) < 0)
             L[n++] = P[i];
     if (n < 3)
         return 0;
@@ -390,7 +371,7 @@ certify(_wc_fan3_t F, fan_ctx * c, const slong * S, slong m, slong k,
         _fmpz_vec_add(w, w, h, 3);
     }
     for (i = 0; i < k && ok; i++)
-        ok = dot_sgn(w, GV(c, i), c->t) > 0;
+        ok = _wc_zvec3_dot_sgn_fast(w, GV(c, i), c->t) > 0;
     if (!ok)
     {
         _fmpz_vec_clear(N, 3 * m);
@@ -429,17 +410,17 @@ fan_axis(_wc_fan3_t F, fan_ctx * c, const fmpz * q, slong k, slong * x,
 
         if (_fmpz_vec_is_zero(c->qx + 3 * i, 3))
         {
-            if (dot_sgn(q, GV(c, i), c->t) < 0)
+            if (_wc_zvec3_dot_sgn_fast(q, GV(c, i), c->t) < 0)
             {
                 res = WC_FAN3_SPACE;    /* -q in the cone, q interior */
                 goto done;
             }
             continue;                   /* on the axis: not extreme */
         }
-        sg = dot_sgn(n, GV(c, i), c->t);
+        sg = _wc_zvec3_dot_sgn_fast(n, GV(c, i), c->t);
         c->half[i] = !(sg > 0
                        || (sg == 0
-                           && dot_sgn(r, GV(c, i), c->t) > 0));
+                           && _wc_zvec3_dot_sgn_fast(r, GV(c, i), c->t) > 0));
         x[p++] = i;
     }
     sort_idx(c, x, y, p);
@@ -502,7 +483,7 @@ _wc_fan3(_wc_fan3_t F, const fmpz * G, slong k)
         const fmpz * n = c.qx + 3 * i;
 
         for (i = 0; i < k && planar; i++)
-            planar = dot_sgn(n, G + 3 * i, c.t) == 0;
+            planar = _wc_zvec3_dot_sgn_fast(n, G + 3 * i, c.t) == 0;
     }
     if (!planar && !set_qw(&c, q, k))
         res = WC_FAN3_NOMEM;

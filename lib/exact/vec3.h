@@ -27,4 +27,8 @@ void _wc_zqvec3_dot(fmpq_t r, const fmpz * h, const fmpq * p);
 /* The sign of a . b; t := a . b (callers read it).  */
 int _wc_zvec3_dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t);
 
+/* The sign of a . b, in 128-bit integers when no entry is a GMP integer;
+   t is scratch only (it does not hold a . b afterwards).  */
+int _wc_zvec3_dot_sgn_fast(const fmpz * a, const fmpz * b, fmpz_t t);
+
 #endif
