@@ -362,7 +362,7 @@ plane_sign(kwalk * W, slong q, int s)
 static void
 plane_sign_at(kwalk * W, slong q, const fmpz * x)
 {
-    plane_sign(W, q, _wc_zvec3_dot_sgn(WC_ROW(W->planes, q), x, W->t));
+    plane_sign(W, q, _wc_zvec3_dot_sgn_fast(WC_ROW(W->planes, q), x, W->t));
 }
 
 /* The forms of W->a grouped by plane (ids by first column).  */
@@ -439,7 +439,7 @@ meets_cone(kwalk * W, const fmpz * h)
 
     for (i = 0; i < nr; i++)
     {
-        s = _wc_zvec3_dot_sgn(h, WC_ROW(K->rays, i), W->t);
+        s = _wc_zvec3_dot_sgn_fast(h, WC_ROW(K->rays, i), W->t);
         if (s == 0)
             return 1;
         pos += s > 0;
@@ -449,7 +449,7 @@ meets_cone(kwalk * W, const fmpz * h)
     }
     for (i = 0; i < nl; i++)
     {
-        s = _wc_zvec3_dot_sgn(h, WC_ROW(K->lines, i), W->t);
+        s = _wc_zvec3_dot_sgn_fast(h, WC_ROW(K->lines, i), W->t);
         if (s == 0)
             return 1;
         pos++;
@@ -640,7 +640,7 @@ in_cone(kwalk * W, const fmpz * x)
     c = _fmpz_vec_init(3);
     _wc_zvec3_cross(c, x, WC_ROW(W->K->rays, 0));
     on = _fmpz_vec_is_zero(c, 3)
-        && _wc_zvec3_dot_sgn(x, WC_ROW(W->K->rays, 0), W->t) > 0;
+        && _wc_zvec3_dot_sgn_fast(x, WC_ROW(W->K->rays, 0), W->t) > 0;
     _fmpz_vec_clear(c, 3);
     return on;
 }
@@ -650,7 +650,7 @@ static int
 det_sgn(kwalk * W, const fmpz * h, const fmpz * a, const fmpz * b)
 {
     _wc_zvec3_cross(W->ray3, a, b);
-    return _wc_zvec3_dot_sgn(h, W->ray3, W->t);
+    return _wc_zvec3_dot_sgn_fast(h, W->ray3, W->t);
 }
 
 /* Fast path: whether x (nonzero, on the current plane h) lies in the
@@ -665,7 +665,7 @@ in_sector(kwalk * W, const fmpz * x)
     {
         _wc_zvec3_cross(W->ray3, W->b1, x);
         return _fmpz_vec_is_zero(W->ray3, 3)
-            && _wc_zvec3_dot_sgn(W->b1, x, W->t) > 0;
+            && _wc_zvec3_dot_sgn_fast(W->b1, x, W->t) > 0;
     }
     return det_sgn(W, h, W->b1, x) >= 0 && det_sgn(W, h, x, W->b2) >= 0;
 }
@@ -776,8 +776,8 @@ sort_lines(kwalk * W, slong p)
         if (W->sect)
         {
             const fmpz * hq = WC_ROW(W->planes, W->rl[i]);
-            int s1 = _wc_zvec3_dot_sgn(hq, W->b1, W->t);
-            int s2 = _wc_zvec3_dot_sgn(hq, W->b2, W->t);
+            int s1 = _wc_zvec3_dot_sgn_fast(hq, W->b1, W->t);
+            int s2 = _wc_zvec3_dot_sgn_fast(hq, W->b2, W->t);
 
             W->keep[W->rl[i]] = s1 * s2 <= 0;
             if (!W->keep[W->rl[i]])
