@@ -249,24 +249,6 @@ member(const fmpq * g, void * p)
     }
 }
 
-/* Append C's planes (inequalities, then equations) to the rows of A.  */
-static void
-collect_planes(fmpz_mat_t A, slong * r, const wc_cone_t C)
-{
-    slong i, add = fmpz_mat_nrows(C->ineqs) + fmpz_mat_nrows(C->eqs);
-    fmpz_mat_t B;
-
-    fmpz_mat_init(B, *r + add, 3);
-    for (i = 0; i < *r; i++)
-        _fmpz_vec_set(WC_ROW(B, i), WC_ROW(A, i), 3);
-    for (i = 0; i < fmpz_mat_nrows(C->ineqs); i++, (*r)++)
-        _fmpz_vec_set(WC_ROW(B, *r), WC_ROW(C->ineqs, i), 3);
-    for (i = 0; i < fmpz_mat_nrows(C->eqs); i++, (*r)++)
-        _fmpz_vec_set(WC_ROW(B, *r), WC_ROW(C->eqs, i), 3);
-    fmpz_mat_swap(A, B);
-    fmpz_mat_clear(B);
-}
-
 typedef struct
 {
     wc_stability_struct * S;
@@ -393,12 +375,13 @@ stability_sets(wc_stability_t S, wc_error_t err)
     wc_cell_bits X;
 
     fmpz_mat_init(planes, 0, 3);
-    collect_planes(planes, &np, S->weak);
+    _wc_plan_add_planes(planes, &np, S->weak);
     for (i = 0; i < S->nmoving; i++)
-        collect_planes(planes, &np, S->moving + i);
+        _wc_plan_add_planes(planes, &np, S->moving + i);
     for (i = 0; i < S->nunion; i++)
-        collect_planes(planes, &np, S->paper_union + i);
-    status = wc_cells_build(S->cells, planes, err);
+        _wc_plan_add_planes(planes, &np, S->paper_union + i);
+    status = WC_OK;
+    _wc_plan_cells_build(S->cells, &status, planes, np, err);
     fmpz_mat_clear(planes);
     if (status != WC_OK)
         return status;
