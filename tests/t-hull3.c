@@ -1,5 +1,6 @@
-/* t-hull3.c -- the O(k log k) 3-D kernel (fan3.c, cone3.c) against the
-   former O(k^2) kernel (ref-hull3.c, an independent copy) and cddlib.
+/* t-hull3.c -- the O(k log k) 3-D kernel (fan3.c, polar3.c, cone3.c)
+   against the former O(k^2) kernel (ref-hull3.c, an independent copy)
+   and cddlib.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -9,10 +10,13 @@
    general, pointed, repeated and parallel generators, opposite pairs,
    all coplanar, on one plane through the origin, lines, lineality 1 and
    2, the whole R^3, many generators on one facet or one half-plane
-   through the axis, huge and tiny coordinates.  Both conversions
+   through the axis, pointed cones whose generators make obtuse angles
+   with their sum (the fan's angular scan then needs the linear program),
+   huge and tiny coordinates.  Both conversions
    (V -> H and H -> V) must give the reference's rows as sets; the whole
    canonical cone (fast path) must equal the one through cddlib and the
-   general route, field for field.  */
+   general route, field for field; the fan and the linear program must
+   classify the cone as the reference's facets do.  */
 
 #include <config.h>
 
@@ -25,13 +29,17 @@
 #include "testutil.h"
 #include "ref-hull3.h"
 #include "exact/hull3.h"
+#include "exact/vec3.h"
+#include "exact/fan3.h"
+#include "exact/polar3.h"
 #include "exact/cddbridge.h"
 
 enum { GENERAL, POINTED, DEGENERATE, COPLANAR, HALFSPACE, WEDGE, SPACE,
-       FACETRUN, AXISRUN, LAYOUTS };
+       FACETRUN, AXISRUN, OBTUSE, LAYOUTS };
 
 static const char * layout_name[] = { "general", "pointed", "degenerate",
-    "coplanar", "half-space", "wedge", "space", "facet-run", "axis-run" };
+    "coplanar", "half-space", "wedge", "space", "facet-run", "axis-run",
+    "obtuse" };
 
 static slong
 rnd(slong r)
@@ -120,6 +128,13 @@ make(fmpq_mat_t R, fmpq_mat_t L, int layout, slong k)
             if (v[0] * c[0] + v[1] * c[1] + v[2] * c[2] < 0)
                 for (j = 0; j < 3; j++)
                     v[j] = -v[j];
+            break;
+        case OBTUSE:
+            /* chart points (x, y) of the basis u, w, c: most near
+               (-8, 0), a few near (8, 0), far from the sum's side */
+            for (j = 0; j < 3; j++)
+                v[j] = (i % 5 == 0 ? 8 : -8 + rnd(1)) * u[j]
+                    + rnd(i % 5 == 0 ? 6 : 2) * w[j] + c[j];
             break;
         case SPACE:
             if (i < 4)
@@ -216,6 +231,66 @@ same_rows(const fmpq_mat_t A, const fmpq_mat_t B, const char * what,
     fmpz_mat_clear(SB);
 }
 
+static slong
+rank_q(const fmpq_mat_t A)
+{
+    fmpq_mat_t B;
+    slong r;
+
+    fmpq_mat_init(B, fmpq_mat_nrows(A), 3);
+    r = fmpq_mat_nrows(A) ? fmpq_mat_rref(B, A) : 0;
+    fmpq_mat_clear(B);
+    return r;
+}
+
+/* _wc_fan3 and _wc_polar3 on the generators against the reference's
+   E2 and H2: dimension 3 (no equalities) with facets of rank 3 is
+   pointed, of rank 2 a wedge times a line, 1 a half-space, 0 R^3.  */
+static void
+classify(const fmpq_mat_t R, const fmpq_mat_t L, const fmpq_mat_t E2,
+         const fmpq_mat_t H2, int layout, slong k)
+{
+    static const int polar_of[] = { WC_POLAR3_SPACE, WC_POLAR3_RAY,
+        WC_POLAR3_WEDGE, WC_POLAR3_POINTED };
+    fmpz_mat_t G;
+    fmpz * V = _fmpz_vec_init(6);
+    _wc_fan3_t F;
+    slong n, i, h = rank_q(H2);
+    int want, got;
+    fmpz_t t;
+
+    fmpz_init(t);
+    fmpz_mat_init(G, 0, 3);
+    _wc_fan3_init(F);
+    if (!_wc_hull3_generators(G, &n, R, L))
+        wctest_fail("out of memory");
+    want = fmpq_mat_nrows(E2) > 0 ? WC_FAN3_OTHER
+        : h == 3 ? WC_FAN3_POINTED : h == 0 ? WC_FAN3_SPACE : WC_FAN3_OTHER;
+    got = n == 0 ? WC_FAN3_OTHER : _wc_fan3(F, G->rows[0], n);
+    if (got != want)
+        wctest_fail("fan3 says %d, the reference %d (%s, k = %ld)", got,
+                    want, layout_name[layout], (long) k);
+    if (got == WC_FAN3_POINTED && F->m != fmpq_mat_nrows(H2))
+        wctest_fail("fan3: %ld facets, the reference %ld (%s, k = %ld)",
+                    (long) F->m, (long) fmpq_mat_nrows(H2),
+                    layout_name[layout], (long) k);
+    if (fmpq_mat_nrows(E2) == 0 && n > 0)
+    {
+        got = _wc_polar3(V, G->rows[0], n);
+        if (got != polar_of[h])
+            wctest_fail("polar3 says %d, the reference %d (%s, k = %ld)",
+                        got, polar_of[h], layout_name[layout], (long) k);
+        for (i = 0; i < n && got == WC_POLAR3_POINTED; i++)
+            if (_wc_zvec3_dot_sgn(V, G->rows[i], t) <= 0)
+                wctest_fail("polar3: d . g <= 0 (%s, k = %ld)",
+                            layout_name[layout], (long) k);
+    }
+    _wc_fan3_clear(F);
+    fmpz_mat_clear(G);
+    _fmpz_vec_clear(V, 6);
+    fmpz_clear(t);
+}
+
 /* One random set: both conversions against the reference, the whole cone
    against cddlib (use_cdd) and H -> V -> H round trips.  */
 static void
@@ -250,6 +325,7 @@ check_one(int layout, slong k, int use_cdd)
         wctest_fail("v_to_h: equalities differ (%s, k = %ld)",
                     layout_name[layout], (long) k);
     same_rows(H1, H2, "v_to_h: facets", layout, k);
+    classify(R, L, E2, H2, layout, k);
 
     /* H -> V, the generators read as constraints (no equalities, and
        with L as equalities).  */
