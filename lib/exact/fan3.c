@@ -10,15 +10,14 @@
    the generator farthest from q, the generators form a star-shaped
    polygon in the central projection; its convex hull, by Graham's scan
    from the generator farthest from q (a hull vertex when every generator
-   makes an acute angle with q: then all lie in the chart q . x = 1, and
-   the minimum of q . g / |g| over a positive combination is at one of
-   its terms), gives the extreme rays in order, with orientation predicate
-   sign det(a, b, c).  The answer is certified, not assumed: c, the sum of
-   the inward facet normals, must satisfy c . g > 0 for every generator,
-   which proves the cone pointed.  When it fails, -q in the cone of three
-   generators proves R^3.  When neither settles the cone, or some
-   generator makes an obtuse angle with q (the start need not be
-   extreme), polar3.c's exact linear program decides: R^3, not pointed
+   makes an acute angle with q; not always otherwise), gives the extreme
+   rays in order, with orientation predicate sign det(a, b, c).  The
+   answer is certified, not assumed: every generator must lie inside the
+   hull's edge in its sector around q (O(k), see contained), and c, the
+   sum of the inward facet normals, must satisfy c . g > 0 for every
+   generator, which proves the cone pointed.  When that fails, -q in the
+   cone of three generators proves R^3.  When neither settles the cone,
+   polar3.c's exact linear program decides: R^3, not pointed
    (left to the general kernel), or pointed with a direction d,
    d . g > 0 for every generator; then the hull in the chart d . x = 1
    (Andrew's monotone chain, with the same orientation predicate) is the
@@ -361,6 +360,31 @@ scan(fan_ctx * c, const fmpz * q, const slong * P, slong p, slong s,
     return m;
 }
 
+/* 1 when every point of the sorted polygon x[0..p) lies on the inner
+   side of the hull edge S[j] S[j+1] whose sector around q holds it.  The
+   hull, a subsequence of x from x[s] = S[0], turns once around q with
+   sectors below a half-turn (scan checked), so this proves
+   pos(G) = pos(S) whatever the start: every generator is in some
+   pos(S[j], S[j+1], q), and q is inside every edge.  O(p).  */
+static int
+contained(fan_ctx * c, const slong * x, slong p, slong s, const slong * S,
+          slong m)
+{
+    slong i, j = 0;
+
+    for (i = 1; i < p; i++)
+    {
+        slong v = x[(s + i) % p];
+
+        if (j + 1 < m && v == S[j + 1])
+            j++;
+        else if (det_sgn(GV(c, S[j]), GV(c, S[(j + 1) % m]), GV(c, v), c->t,
+                         c->u) < 0)
+            return 0;
+    }
+    return 1;
+}
+
 /* F := the fan of the rays G[S[0..m)], each consecutive triple turning
    left (det > 0): facet i outward, -(S_i x S_{i+1}), primitive.  */
 static void
@@ -563,11 +587,10 @@ fan_axis(_wc_fan3_t F, fan_ctx * c, const fmpz * q, slong k, slong * x,
     p = outermost(c, x, p, w);
     if (p < 3)
         goto done;
-    /* The start is provably a hull vertex only when every generator
-       makes an acute angle with q; otherwise the linear program.  */
     s = farthest(c, q, x, p);
-    m = _wc_zvec3_dot_sgn_fast(q, GV(c, x[s]), c->t) > 0
-        ? scan(c, q, x, p, s, z) : 0;
+    m = scan(c, q, x, p, s, z);
+    if (m >= 3 && !contained(c, x, p, s, z, m))
+        m = 0;
     if (m >= 3 && certify(F, c, z, m, k, w))
         res = WC_FAN3_POINTED;
     else if (space_by_triple(c, q, x, p, y))
