@@ -400,6 +400,98 @@ check_one(int layout, slong k, int use_cdd)
     wc_error_clear(err);
 }
 
+/* The layouts that made the former kernel cubic, at sizes it could not
+   take, with their answers known in closed form: a wedge times the line
+   of e3 (rays (i - 1500, 1000 + i^2 mod 997, i mod 13 - 6)), whose two
+   extreme rays in the quotient are the rows of smallest and largest
+   x / y; and a pointed cone of 13,000 rows, most near the chart point
+   (-1000, 0), three at x = 1000 -- the middle one, (1000, 0), farthest
+   from the rows' sum yet not extreme.  */
+static void
+check_hostile(void)
+{
+    static const slong want[4][3] = { { -1000, -50, 1 }, { -1000, 50, 1 },
+        { 1000, -500, 1 }, { 1000, 500, 1 } };
+    fmpq_mat_t R, L;
+    wc_cone_t C;
+    wc_error_t err;
+    slong n = 3000, i, lo = 0, hi = 0, j;
+
+    wc_cone_init(C, 3);
+    wc_error_init(err);
+    fmpq_mat_init(R, n, 3);
+    fmpq_mat_init(L, 1, 3);
+    fmpq_set_si(fmpq_mat_entry(L, 0, 2), 1, 1);
+    for (i = 0; i < n; i++)
+    {
+        slong x = i - 1500, y = 1000 + (i * i) % 997;
+
+        fmpq_set_si(fmpq_mat_entry(R, i, 0), x, 1);
+        fmpq_set_si(fmpq_mat_entry(R, i, 1), y, 1);
+        fmpq_set_si(fmpq_mat_entry(R, i, 2), i % 13 - 6, 1);
+        /* x / y against the best so far: x y' < x' y */
+        if (x * fmpz_get_si(fmpq_numref(fmpq_mat_entry(R, lo, 1)))
+            < fmpz_get_si(fmpq_numref(fmpq_mat_entry(R, lo, 0))) * y)
+            lo = i;
+        if (x * fmpz_get_si(fmpq_numref(fmpq_mat_entry(R, hi, 1)))
+            > fmpz_get_si(fmpq_numref(fmpq_mat_entry(R, hi, 0))) * y)
+            hi = i;
+    }
+    if (wc_cone_set_generators(C, R, L, err) != WC_OK)
+        wctest_fail("hostile wedge: %s", err->message);
+    if (C->dim != 3 || C->lineality_dim != 1 || fmpz_mat_nrows(C->rays) != 2
+        || fmpz_mat_nrows(C->ineqs) != 2)
+        wctest_fail("hostile wedge: dim %ld, lineality %ld, %ld rays, %ld "
+                    "facets", (long) C->dim, (long) C->lineality_dim,
+                    (long) fmpz_mat_nrows(C->rays),
+                    (long) fmpz_mat_nrows(C->ineqs));
+    /* the rays, projected off e3 and made primitive: rows lo and hi,
+       x < 0 first */
+    for (i = 0; i < 2; i++)
+    {
+        slong r = i == 0 ? lo : hi;
+        fmpz_t g;
+
+        fmpz_init(g);
+        fmpz_gcd(g, fmpq_numref(fmpq_mat_entry(R, r, 0)),
+                 fmpq_numref(fmpq_mat_entry(R, r, 1)));
+        for (j = 0; j < 3; j++)
+            if (fmpz_get_si(fmpz_mat_entry(C->rays, i, j)) * fmpz_get_si(g)
+                != (j == 2 ? 0
+                    : fmpz_get_si(fmpq_numref(fmpq_mat_entry(R, r, j)))))
+                wctest_fail("hostile wedge: wrong extreme ray %ld", i);
+        fmpz_clear(g);
+    }
+
+    n = 13000;
+    fmpq_mat_clear(R);
+    fmpq_mat_clear(L);
+    fmpq_mat_init(R, n, 3);
+    fmpq_mat_init(L, 0, 3);
+    for (i = 0; i < n; i++)
+    {
+        slong x = i < n - 3 ? -1000 + i % 97 : 1000;
+        slong y = i < n - 3 ? (i * 37) % 101 - 50 : (i - (n - 2)) * 500;
+
+        fmpq_set_si(fmpq_mat_entry(R, i, 0), x, 1);
+        fmpq_set_si(fmpq_mat_entry(R, i, 1), y, 1);
+        fmpq_set_si(fmpq_mat_entry(R, i, 2), 1, 1);
+    }
+    if (wc_cone_set_generators(C, R, L, err) != WC_OK)
+        wctest_fail("hostile pointed: %s", err->message);
+    if (C->lineality_dim != 0 || fmpz_mat_nrows(C->rays) != 4)
+        wctest_fail("hostile pointed: %ld rays, lineality %ld",
+                    (long) fmpz_mat_nrows(C->rays), (long) C->lineality_dim);
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 3; j++)
+            if (fmpz_get_si(fmpz_mat_entry(C->rays, i, j)) != want[i][j])
+                wctest_fail("hostile pointed: wrong extreme ray %ld", i);
+    fmpq_mat_clear(R);
+    fmpq_mat_clear(L);
+    wc_cone_clear(C);
+    wc_error_clear(err);
+}
+
 int
 main(void)
 {
@@ -407,6 +499,7 @@ main(void)
 
     wc_init();
     wctest_init("t-hull3");
+    check_hostile();
     iters = wctest_iters(900);
     for (i = 0; i < iters; i++)
     {
