@@ -212,6 +212,74 @@ holds(lp_ctx * c, const fmpz * d, int strict)
     return 1;
 }
 
+/* 1 when y lies in pos(T), T the rows g with g . e = 0 (y . e = 0, e not
+   0): y is a positive multiple of one of them, or lies strictly between
+   the nearest counterclockwise and clockwise ones about e, which are less
+   than a half-turn apart.  O(k).  w: 3 entries of scratch.  */
+static int
+plane_holds(lp_ctx * c, const fmpz * e, const fmpz * y, fmpz * w)
+{
+    const fmpz * A = NULL, * B = NULL, * g;
+    slong i;
+    int s;
+
+    for (i = 0; i < c->k; i++)
+    {
+        g = c->G + 3 * i;
+        if (_wc_zvec3_dot_sgn_fast(g, e, c->s) != 0)
+            continue;
+        _wc_zvec3_cross(w, y, g);
+        s = _wc_zvec3_dot_sgn_fast(w, e, c->s);
+        if (s == 0 && _wc_zvec3_dot_sgn_fast(y, g, c->s) > 0)
+            return 1;
+        if (s > 0 && A != NULL)
+            _wc_zvec3_cross(w, A, g);
+        if (s > 0 && (A == NULL || _wc_zvec3_dot_sgn_fast(w, e, c->s) < 0))
+            A = g;
+        if (s < 0 && B != NULL)
+            _wc_zvec3_cross(w, B, g);
+        if (s < 0 && (B == NULL || _wc_zvec3_dot_sgn_fast(w, e, c->s) > 0))
+            B = g;
+    }
+    if (A == NULL || B == NULL)
+        return 0;
+    _wc_zvec3_cross(w, B, A);
+    return _wc_zvec3_dot_sgn_fast(w, e, c->s) > 0;
+}
+
+/* 1 when the rows on the plane v . x = 0 span, as a cone, the half-plane
+   of it where u . x >= 0 (u not 0: u . x = 0 is then the line n = v x u)
+   or, u = NULL, the whole plane: that part of the boundary of
+   { x : v . x >= 0 } is then in pos(G).  e: 9 entries of scratch.  */
+static int
+face_held(lp_ctx * c, const fmpz * v, const fmpz * u, fmpz * e)
+{
+    fmpz * n = e, * m = e + 3, * w = e + 6;
+    slong i;
+    int j, ok = 1;
+
+    if (u != NULL)
+        _wc_zvec3_cross(n, v, u);
+    for (j = 0; u == NULL && j < 3; j++)
+    {
+        _fmpz_vec_zero(w, 3);
+        fmpz_one(w + j);
+        _wc_zvec3_cross(n, v, w);
+        if (!_fmpz_vec_is_zero(n, 3))
+            break;
+    }
+    _wc_zvec3_cross(m, v, n);
+    for (j = 0; j < (u == NULL ? 4 : 2) && ok; j++)
+    {
+        ok = plane_holds(c, v, j < 2 ? n : m, w);
+        _fmpz_vec_neg(j < 2 ? n : m, j < 2 ? n : m, 3);
+    }
+    for (i = 0, j = u == NULL; i < c->k && ok && !j; i++)
+        j = _wc_zvec3_dot_sgn_fast(v, c->G + 3 * i, c->s) == 0
+            && _wc_zvec3_dot_sgn_fast(u, c->G + 3 * i, c->s) > 0;
+    return ok && j;
+}
+
 /* With v1 the lexicographic maximum and v2 the minimum on P (not one
    ray): pointed (V := an interior point) or a wedge.  e: 9 entries of
    scratch.  */
@@ -235,10 +303,11 @@ chord(lp_ctx * c, fmpz * V, const fmpz * v1, const fmpz * v2, fmpz * e)
         }
         _fmpz_vec_neg(n, n, 3);
     }
+    /* Certified: the rows hold on both facets, which pos(G) contains.  */
     _fmpz_vec_set(V, v1, 3);
     _fmpz_vec_set(V + 3, v2, 3);
-    return holds(c, V, 0) && holds(c, V + 3, 0)
-        ? WC_POLAR3_WEDGE : WC_POLAR3_FAILED;
+    return holds(c, V, 0) && holds(c, V + 3, 0) && face_held(c, v1, v2, e)
+        && face_held(c, v2, v1, e) ? WC_POLAR3_WEDGE : WC_POLAR3_FAILED;
 }
 
 static void
@@ -306,7 +375,8 @@ _wc_polar3(fmpz * V, const fmpz * G, slong k)
     if (_fmpz_vec_is_zero(e1, 3))
     {
         _fmpz_vec_set(V, v1, 3);
-        r = holds(&c, V, 0) ? WC_POLAR3_RAY : WC_POLAR3_FAILED;
+        r = holds(&c, V, 0) && face_held(&c, V, NULL, e + 12)
+            ? WC_POLAR3_RAY : WC_POLAR3_FAILED;
     }
     else
         r = chord(&c, V, v1, v2, e + 12);

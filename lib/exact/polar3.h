@@ -12,7 +12,10 @@
    interior (pos(G) pointed).  _wc_polar3 tells which in O(k) expected
    exact integer operations (a few two-variable linear programs, Seidel's
    randomized incremental method in a chart of P), with the rays or an
-   interior point, checked before it answers.  */
+   interior point, checked before it answers: an interior point d by
+   d . g > 0 for every g; a ray or a wedge by the rows on each facet,
+   which must span it as a cone (then pos(G) holds the whole cone the
+   facets bound).  R^3 is the programs' infeasibility, not re-checked.  */
 
 #ifndef WC_EXACT_POLAR3_H
 #define WC_EXACT_POLAR3_H
