@@ -16,8 +16,16 @@
    quadratically from the previous one, would exceed MAX_SECONDS (default
    120) is skipped and says so.  Wall-clock times, and the process's CPU
    time (clock(3)) of the parse alone and of parse and compare together,
-   which a shared machine disturbs less.  The last line is "compare,
-   k=K: T s" (wall clock) for the largest k timed.  */
+   which a shared machine disturbs less.  The last line of that table is
+   "compare, k=K: T s" (wall clock) for the largest k timed.
+
+   Then the layouts that made the former 3-D kernel cubic, as exact
+   integer cdd files: a wedge of the plane z = 0 times the line of e3
+   (lineality 1; rows (i - k/2, 1000 + i^2 mod 997, 0)) of k = 500,
+   1,000, 2,000 and 100,000 rows, and a pointed cone of 13,000 rows whose
+   row farthest from the rows' sum is not extreme (most near the chart
+   point (-1000, 0), three at x = 1000); CPU seconds of parse and
+   compare, or the reader's refusal.  */
 
 #include <config.h>
 
@@ -64,6 +72,85 @@ foreign_text(const wc_cone_t W, slong k)
     }
     sprintf(e, "end\n");
     return t;
+}
+
+/* A hostile foreign cone: a wedge times the line of e3 (k rows, the
+   line first) when wedge is set, else the pointed 13,000-row cone.  */
+static char *
+hostile_text(slong k, int wedge)
+{
+    char * t = malloc(64 * (size_t) (k + 4)), * e = t;
+    slong i;
+
+    if (t == NULL)
+        return NULL;
+    e += sprintf(e, "V-representation\n%sbegin\n%ld 4 rational\n",
+                 wedge ? "linearity 1 1\n" : "", (long) k);
+    if (wedge)
+        e += sprintf(e, "0 0 0 1\n");
+    for (i = 0; i < k - wedge; i++)
+        if (wedge)
+            e += sprintf(e, "0 %ld %ld 0\n", (long) (i - k / 2),
+                         (long) (1000 + (i * i) % 997));
+        else if (i < k - 3)
+            e += sprintf(e, "0 %ld %ld 1\n", (long) (-1000 + i % 97),
+                         (long) ((i * 37) % 101 - 50));
+        else
+            e += sprintf(e, "0 1000 %ld 1\n", (long) ((i - (k - 2)) * 500));
+    sprintf(e, "end\n");
+    return t;
+}
+
+static void
+hostile(const wc_cone_t W, const char * mode)
+{
+    static const slong sizes[] = { 500, 1000, 2000, 100000, 13000 };
+    slong s;
+    wc_error_t err;
+
+    wc_error_init(err);
+    printf("hostile layouts (exact integers), CPU s\n");
+    printf("%-14s  %7s  %11s  %10s  %s\n", "layout", "k", "parse CPU s",
+           "CPU s", "verdict");
+    for (s = 0; s < 5; s++)
+    {
+        slong k = sizes[s];
+        int wedge = s < 4;
+        char * text = hostile_text(k, wedge);
+        wc_foreign_t F;
+        wc_comparison_t R;
+        clock_t c0, c1;
+
+        if (text == NULL)
+            return;
+        wc_foreign_init(F);
+        wc_comparison_init(R);
+        c0 = clock();
+        if (wc_foreign_parse(F, text, strlen(text), "bench", err) != WC_OK)
+        {
+            char * m = wc_error_format(err);
+
+            printf("%-14s  %7ld  refused: %s\n", wedge ? "wedge x line"
+                   : "pointed obtuse", (long) k, m != NULL ? m : "?");
+            free(m);
+        }
+        else
+        {
+            c1 = clock();
+            if (wc_compare(R, W, mode, F, WC_COMPARE_TOL, err) != WC_OK)
+                wcbench_die("bench-compare", "wc_compare", err);
+            printf("%-14s  %7ld  %11.3f  %10.3f  %s\n", wedge ? "wedge x line"
+                   : "pointed obtuse", (long) k,
+                   (double) (c1 - c0) / CLOCKS_PER_SEC,
+                   (double) (clock() - c0) / CLOCKS_PER_SEC,
+                   R->differs == 0 ? "within tolerance" : "outside tolerance");
+        }
+        fflush(stdout);
+        wc_comparison_clear(R);
+        wc_foreign_clear(F);
+        free(text);
+    }
+    wc_error_clear(err);
 }
 
 int
@@ -145,6 +232,7 @@ main(int argc, char ** argv)
     }
     if (last > 0)
         printf("compare, k=%ld: %.3f s\n", (long) last, tlast);
+    hostile(W, mode);
     wc_cone_clear(W);
     wc_problem_clear(P);
     wc_error_clear(err);

@@ -344,11 +344,10 @@ for pm in section4.wc:na section4.wc:ns section4.wc:sa section4.wc:ma \
     done
 done
 
-# The cost bound: a cone the near-linear conversion does not take (here a
-# wedge times a line: lineality 1) may have at most 1000 rows, refused
-# before any work at the representation's first line (1000 such rows take
-# seconds, so they are not run here); 1001 rays of a pointed cone are
-# compared as usual.
+# Large cones of every kind take the near-linear conversion: a wedge
+# times a line (lineality 1) of 1001 rows is read exactly -- its two
+# extreme rays are rows 1 and 998 of the wedge (file lines 6 and 1003) --
+# and compared as usual; so are 1001 rays of a pointed cone.
 big() {
     awk -v n="$1" -v line="$2" 'BEGIN {
         print "V-representation"
@@ -360,9 +359,13 @@ big() {
 }
 big 1001 1 > "$tmp/wedge1001.ext"
 big 1001 0 > "$tmp/fan1001.ext"
-run wedge-1001 1 "$D/section4.wc" na "$tmp/wedge1001.ext"
-if [ -s "$tmp/out" ] || ! grep -q "^wrenchcone: .*wedge1001.ext:1:1: this cone has 1001 rows; .* may have at most 1000\$" "$tmp/err"; then
-    fail wedge-1001 "expected one located refusal, nothing on stdout"
+run wedge-1001 4 "$D/section4.wc" na "$tmp/wedge1001.ext"
+if [ -s "$tmp/err" ] \
+    || ! grep -q "^  read exactly: nonempty, dimension 3, lineality 1, 2 extreme rays, 2 facets\$" "$tmp/out" \
+    || ! grep -q "^    fr0   (-0.44614, 0.894963, 0)  line 6  " "$tmp/out" \
+    || ! grep -q "^    fr1   (0.445424, 0.89532, 0)  line 1003  " "$tmp/out" \
+    || ! grep -q "^verdict: outside tolerance: lineality differs (exact 0, float 1);" "$tmp/out"; then
+    fail wedge-1001 "expected the exact wedge times a line and its verdict"
     cat "$tmp/err"
 fi
 run fan-1001 4 "$D/section4.wc" na "$tmp/fan1001.ext"

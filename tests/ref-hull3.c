@@ -9,6 +9,8 @@
    candidate facets (cross products of pairs of generators), each
    validated against every generator.  It shares no code with the fast
    kernel and is kept unchanged as the test reference; do not optimise it.
+   It is also the only copy left of the general candidate search: the
+   library now converts every 3-D cone near-linearly (fan3.c, polar3.c).
 
    The direct route works in R^3 whatever the number of fixels, where a
    facet of pos(G) contains r - 1 independent generators (r = dim span G):

@@ -1,5 +1,6 @@
-/* t-hull3.c -- the O(k log k) 3-D kernel (fan3.c, cone3.c) against the
-   former O(k^2) kernel (ref-hull3.c, an independent copy) and cddlib.
+/* t-hull3.c -- the O(k log k) 3-D kernel (fan3.c, polar3.c, cone3.c)
+   against the former O(k^2) kernel (ref-hull3.c, an independent copy)
+   and cddlib.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -9,10 +10,13 @@
    general, pointed, repeated and parallel generators, opposite pairs,
    all coplanar, on one plane through the origin, lines, lineality 1 and
    2, the whole R^3, many generators on one facet or one half-plane
-   through the axis, huge and tiny coordinates.  Both conversions
+   through the axis, pointed cones whose generators make obtuse angles
+   with their sum (the fan's angular scan then needs the linear program),
+   huge and tiny coordinates.  Both conversions
    (V -> H and H -> V) must give the reference's rows as sets; the whole
    canonical cone (fast path) must equal the one through cddlib and the
-   general route, field for field.  */
+   general route, field for field; the fan and the linear program must
+   classify the cone as the reference's facets do.  */
 
 #include <config.h>
 
@@ -25,13 +29,17 @@
 #include "testutil.h"
 #include "ref-hull3.h"
 #include "exact/hull3.h"
+#include "exact/vec3.h"
+#include "exact/fan3.h"
+#include "exact/polar3.h"
 #include "exact/cddbridge.h"
 
 enum { GENERAL, POINTED, DEGENERATE, COPLANAR, HALFSPACE, WEDGE, SPACE,
-       FACETRUN, AXISRUN, LAYOUTS };
+       FACETRUN, AXISRUN, OBTUSE, LAYOUTS };
 
 static const char * layout_name[] = { "general", "pointed", "degenerate",
-    "coplanar", "half-space", "wedge", "space", "facet-run", "axis-run" };
+    "coplanar", "half-space", "wedge", "space", "facet-run", "axis-run",
+    "obtuse" };
 
 static slong
 rnd(slong r)
@@ -120,6 +128,13 @@ make(fmpq_mat_t R, fmpq_mat_t L, int layout, slong k)
             if (v[0] * c[0] + v[1] * c[1] + v[2] * c[2] < 0)
                 for (j = 0; j < 3; j++)
                     v[j] = -v[j];
+            break;
+        case OBTUSE:
+            /* chart points (x, y) of the basis u, w, c: most near
+               (-8, 0), a few near (8, 0), far from the sum's side */
+            for (j = 0; j < 3; j++)
+                v[j] = (i % 5 == 0 ? 8 : -8 + rnd(1)) * u[j]
+                    + rnd(i % 5 == 0 ? 6 : 2) * w[j] + c[j];
             break;
         case SPACE:
             if (i < 4)
@@ -216,6 +231,66 @@ same_rows(const fmpq_mat_t A, const fmpq_mat_t B, const char * what,
     fmpz_mat_clear(SB);
 }
 
+static slong
+rank_q(const fmpq_mat_t A)
+{
+    fmpq_mat_t B;
+    slong r;
+
+    fmpq_mat_init(B, fmpq_mat_nrows(A), 3);
+    r = fmpq_mat_nrows(A) ? fmpq_mat_rref(B, A) : 0;
+    fmpq_mat_clear(B);
+    return r;
+}
+
+/* _wc_fan3 and _wc_polar3 on the generators against the reference's
+   E2 and H2: dimension 3 (no equalities) with facets of rank 3 is
+   pointed, of rank 2 a wedge times a line, 1 a half-space, 0 R^3.  */
+static void
+classify(const fmpq_mat_t R, const fmpq_mat_t L, const fmpq_mat_t E2,
+         const fmpq_mat_t H2, int layout, slong k)
+{
+    static const int polar_of[] = { WC_POLAR3_SPACE, WC_POLAR3_RAY,
+        WC_POLAR3_WEDGE, WC_POLAR3_POINTED };
+    fmpz_mat_t G;
+    fmpz * V = _fmpz_vec_init(6);
+    _wc_fan3_t F;
+    slong n, i, h = rank_q(H2);
+    int want, got;
+    fmpz_t t;
+
+    fmpz_init(t);
+    fmpz_mat_init(G, 0, 3);
+    _wc_fan3_init(F);
+    if (!_wc_hull3_generators(G, &n, R, L))
+        wctest_fail("out of memory");
+    want = fmpq_mat_nrows(E2) > 0 ? WC_FAN3_OTHER
+        : h == 3 ? WC_FAN3_POINTED : h == 0 ? WC_FAN3_SPACE : WC_FAN3_OTHER;
+    got = n == 0 ? WC_FAN3_OTHER : _wc_fan3(F, G->rows[0], n);
+    if (got != want)
+        wctest_fail("fan3 says %d, the reference %d (%s, k = %ld)", got,
+                    want, layout_name[layout], (long) k);
+    if (got == WC_FAN3_POINTED && F->m != fmpq_mat_nrows(H2))
+        wctest_fail("fan3: %ld facets, the reference %ld (%s, k = %ld)",
+                    (long) F->m, (long) fmpq_mat_nrows(H2),
+                    layout_name[layout], (long) k);
+    if (fmpq_mat_nrows(E2) == 0 && n > 0)
+    {
+        got = _wc_polar3(V, G->rows[0], n);
+        if (got != polar_of[h])
+            wctest_fail("polar3 says %d, the reference %d (%s, k = %ld)",
+                        got, polar_of[h], layout_name[layout], (long) k);
+        for (i = 0; i < n && got == WC_POLAR3_POINTED; i++)
+            if (_wc_zvec3_dot_sgn(V, G->rows[i], t) <= 0)
+                wctest_fail("polar3: d . g <= 0 (%s, k = %ld)",
+                            layout_name[layout], (long) k);
+    }
+    _wc_fan3_clear(F);
+    fmpz_mat_clear(G);
+    _fmpz_vec_clear(V, 6);
+    fmpz_clear(t);
+}
+
 /* One random set: both conversions against the reference, the whole cone
    against cddlib (use_cdd) and H -> V -> H round trips.  */
 static void
@@ -250,6 +325,7 @@ check_one(int layout, slong k, int use_cdd)
         wctest_fail("v_to_h: equalities differ (%s, k = %ld)",
                     layout_name[layout], (long) k);
     same_rows(H1, H2, "v_to_h: facets", layout, k);
+    classify(R, L, E2, H2, layout, k);
 
     /* H -> V, the generators read as constraints (no equalities, and
        with L as equalities).  */
@@ -324,6 +400,98 @@ check_one(int layout, slong k, int use_cdd)
     wc_error_clear(err);
 }
 
+/* The layouts that made the former kernel cubic, at sizes it could not
+   take, with their answers known in closed form: a wedge times the line
+   of e3 (rays (i - 1500, 1000 + i^2 mod 997, i mod 13 - 6)), whose two
+   extreme rays in the quotient are the rows of smallest and largest
+   x / y; and a pointed cone of 13,000 rows, most near the chart point
+   (-1000, 0), three at x = 1000 -- the middle one, (1000, 0), farthest
+   from the rows' sum yet not extreme.  */
+static void
+check_hostile(void)
+{
+    static const slong want[4][3] = { { -1000, -50, 1 }, { -1000, 50, 1 },
+        { 1000, -500, 1 }, { 1000, 500, 1 } };
+    fmpq_mat_t R, L;
+    wc_cone_t C;
+    wc_error_t err;
+    slong n = 3000, i, lo = 0, hi = 0, j;
+
+    wc_cone_init(C, 3);
+    wc_error_init(err);
+    fmpq_mat_init(R, n, 3);
+    fmpq_mat_init(L, 1, 3);
+    fmpq_set_si(fmpq_mat_entry(L, 0, 2), 1, 1);
+    for (i = 0; i < n; i++)
+    {
+        slong x = i - 1500, y = 1000 + (i * i) % 997;
+
+        fmpq_set_si(fmpq_mat_entry(R, i, 0), x, 1);
+        fmpq_set_si(fmpq_mat_entry(R, i, 1), y, 1);
+        fmpq_set_si(fmpq_mat_entry(R, i, 2), i % 13 - 6, 1);
+        /* x / y against the best so far: x y' < x' y */
+        if (x * fmpz_get_si(fmpq_numref(fmpq_mat_entry(R, lo, 1)))
+            < fmpz_get_si(fmpq_numref(fmpq_mat_entry(R, lo, 0))) * y)
+            lo = i;
+        if (x * fmpz_get_si(fmpq_numref(fmpq_mat_entry(R, hi, 1)))
+            > fmpz_get_si(fmpq_numref(fmpq_mat_entry(R, hi, 0))) * y)
+            hi = i;
+    }
+    if (wc_cone_set_generators(C, R, L, err) != WC_OK)
+        wctest_fail("hostile wedge: %s", err->message);
+    if (C->dim != 3 || C->lineality_dim != 1 || fmpz_mat_nrows(C->rays) != 2
+        || fmpz_mat_nrows(C->ineqs) != 2)
+        wctest_fail("hostile wedge: dim %ld, lineality %ld, %ld rays, %ld "
+                    "facets", (long) C->dim, (long) C->lineality_dim,
+                    (long) fmpz_mat_nrows(C->rays),
+                    (long) fmpz_mat_nrows(C->ineqs));
+    /* the rays, projected off e3 and made primitive: rows lo and hi,
+       x < 0 first */
+    for (i = 0; i < 2; i++)
+    {
+        slong r = i == 0 ? lo : hi;
+        fmpz_t g;
+
+        fmpz_init(g);
+        fmpz_gcd(g, fmpq_numref(fmpq_mat_entry(R, r, 0)),
+                 fmpq_numref(fmpq_mat_entry(R, r, 1)));
+        for (j = 0; j < 3; j++)
+            if (fmpz_get_si(fmpz_mat_entry(C->rays, i, j)) * fmpz_get_si(g)
+                != (j == 2 ? 0
+                    : fmpz_get_si(fmpq_numref(fmpq_mat_entry(R, r, j)))))
+                wctest_fail("hostile wedge: wrong extreme ray %ld", i);
+        fmpz_clear(g);
+    }
+
+    n = 13000;
+    fmpq_mat_clear(R);
+    fmpq_mat_clear(L);
+    fmpq_mat_init(R, n, 3);
+    fmpq_mat_init(L, 0, 3);
+    for (i = 0; i < n; i++)
+    {
+        slong x = i < n - 3 ? -1000 + i % 97 : 1000;
+        slong y = i < n - 3 ? (i * 37) % 101 - 50 : (i - (n - 2)) * 500;
+
+        fmpq_set_si(fmpq_mat_entry(R, i, 0), x, 1);
+        fmpq_set_si(fmpq_mat_entry(R, i, 1), y, 1);
+        fmpq_set_si(fmpq_mat_entry(R, i, 2), 1, 1);
+    }
+    if (wc_cone_set_generators(C, R, L, err) != WC_OK)
+        wctest_fail("hostile pointed: %s", err->message);
+    if (C->lineality_dim != 0 || fmpz_mat_nrows(C->rays) != 4)
+        wctest_fail("hostile pointed: %ld rays, lineality %ld",
+                    (long) fmpz_mat_nrows(C->rays), (long) C->lineality_dim);
+    for (i = 0; i < 4; i++)
+        for (j = 0; j < 3; j++)
+            if (fmpz_get_si(fmpz_mat_entry(C->rays, i, j)) != want[i][j])
+                wctest_fail("hostile pointed: wrong extreme ray %ld", i);
+    fmpq_mat_clear(R);
+    fmpq_mat_clear(L);
+    wc_cone_clear(C);
+    wc_error_clear(err);
+}
+
 int
 main(void)
 {
@@ -331,6 +499,7 @@ main(void)
 
     wc_init();
     wctest_init("t-hull3");
+    check_hostile();
     iters = wctest_iters(900);
     for (i = 0; i < iters; i++)
     {

@@ -9,13 +9,19 @@
    the sign of det(q, a, b)), keeping on each half-plane through q only
    the generator farthest from q, the generators form a star-shaped
    polygon in the central projection; its convex hull, by Graham's scan
-   from the generator farthest from q (a hull vertex when the cone is
-   pointed), gives the extreme rays in order, with orientation predicate
-   sign det(a, b, c).  The answer is certified, not assumed: c, the sum of
-   the inward facet normals, must satisfy c . g > 0 for every generator,
-   which proves the cone pointed (the scan is exact on pointed cones).
-   When it fails, -q in the cone of three generators proves R^3; anything
-   else is left to the general kernel.  */
+   from the generator farthest from q (a hull vertex when every generator
+   makes an acute angle with q; not always otherwise), gives the extreme
+   rays in order, with orientation predicate sign det(a, b, c).  The
+   answer is certified, not assumed: every generator must lie inside the
+   hull's edge in its sector around q (O(k), see contained), and c, the
+   sum of the inward facet normals, must satisfy c . g > 0 for every
+   generator, which proves the cone pointed.  When that fails, -q in the
+   cone of three generators proves R^3.  When neither settles the cone,
+   polar3.c's exact linear program decides: R^3, not pointed
+   (left to the general kernel), or pointed with a direction d,
+   d . g > 0 for every generator; then the hull in the chart d . x = 1
+   (Andrew's monotone chain, with the same orientation predicate) is the
+   fan, exact by construction.  */
 
 #include <config.h>
 
@@ -26,6 +32,7 @@
 
 #include "exact/vec3.h"
 #include "exact/fan3.h"
+#include "exact/polar3.h"
 
 typedef struct
 {
@@ -144,16 +151,19 @@ set_qw(fan_ctx * c, const fmpz * q, slong k)
 
 /* Counterclockwise order around q.  */
 static int
-ang_cmp(fan_ctx * c, slong a, slong b)
+ang_cmp(void * ctx, slong a, slong b)
 {
+    fan_ctx * c = ctx;
+
     if (c->half[a] != c->half[b])
         return c->half[a] < c->half[b] ? -1 : 1;
     return -qx_sgn(c, a, b);
 }
 
-/* Stable bottom-up merge sort of x[0..n) by ang_cmp; tmp has n slots.  */
+/* Stable bottom-up merge sort of x[0..n) by cmp; tmp has n slots.  */
 static void
-sort_idx(fan_ctx * c, slong * x, slong * tmp, slong n)
+sort_idx(int (* cmp)(void *, slong, slong), void * c, slong * x,
+         slong * tmp, slong n)
 {
     slong w, i;
 
@@ -165,7 +175,7 @@ sort_idx(fan_ctx * c, slong * x, slong * tmp, slong n)
             slong a = i, b = mid, o = i;
 
             while (a < mid && b < hi)
-                tmp[o++] = ang_cmp(c, x[b], x[a]) < 0 ? x[b++] : x[a++];
+                tmp[o++] = cmp(c, x[b], x[a]) < 0 ? x[b++] : x[a++];
             while (a < mid)
                 tmp[o++] = x[a++];
             while (b < hi)
@@ -350,43 +360,193 @@ scan(fan_ctx * c, const fmpz * q, const slong * P, slong p, slong s,
     return m;
 }
 
-/* The fan of the hull S[0..m): inward normals a x b summed into w; F is
-   set when w . g > 0 for every generator (the certificate).  */
+/* 1 when every point of the sorted polygon x[0..p) lies on the inner
+   side of the hull edge S[j] S[j+1] whose sector around q holds it.  The
+   hull, a subsequence of x from x[s] = S[0], turns once around q with
+   sectors below a half-turn (scan checked), so this proves
+   pos(G) = pos(S) whatever the start: every generator is in some
+   pos(S[j], S[j+1], q), and q is inside every edge.  O(p).  */
+static int
+contained(fan_ctx * c, const slong * x, slong p, slong s, const slong * S,
+          slong m)
+{
+    slong i, j = 0;
+
+    for (i = 1; i < p; i++)
+    {
+        slong v = x[(s + i) % p];
+
+        if (j + 1 < m && v == S[j + 1])
+            j++;
+        else if (det_sgn(GV(c, S[j]), GV(c, S[(j + 1) % m]), GV(c, v), c->t,
+                         c->u) < 0)
+            return 0;
+    }
+    return 1;
+}
+
+/* F := the fan of the rays G[S[0..m)], each consecutive triple turning
+   left (det > 0): facet i outward, -(S_i x S_{i+1}), primitive.  */
+static void
+fill(_wc_fan3_t F, const fmpz * G, const slong * S, slong m, fmpz_t t)
+{
+    slong i;
+
+    _wc_fan3_clear(F);
+    F->m = m;
+    F->rays = _fmpz_vec_init(3 * m);
+    F->facets = _fmpz_vec_init(3 * m);
+    for (i = 0; i < m; i++)
+    {
+        fmpz * h = F->facets + 3 * i;
+
+        _fmpz_vec_set(F->rays + 3 * i, G + 3 * S[i], 3);
+        _wc_zvec3_cross(h, G + 3 * S[(i + 1) % m], G + 3 * S[i]);
+        _fmpz_vec_content(t, h, 3);
+        _fmpz_vec_scalar_divexact_fmpz(h, h, 3, t);
+    }
+}
+
+/* The fan of the hull S[0..m), set in F when w . g > 0 for every
+   generator, w the sum of the inward facet normals (the certificate).  */
 static int
 certify(_wc_fan3_t F, fan_ctx * c, const slong * S, slong m, slong k,
         fmpz * w)
 {
-    fmpz * N = _fmpz_vec_init(3 * m);
     slong i;
     int ok = 1;
 
+    fill(F, c->G, S, m, c->t);
     _fmpz_vec_zero(w, 3);
     for (i = 0; i < m; i++)
-    {
-        fmpz * h = N + 3 * i;
-
-        _wc_zvec3_cross(h, GV(c, S[i]), GV(c, S[(i + 1) % m]));
-        _fmpz_vec_content(c->t, h, 3);
-        _fmpz_vec_scalar_divexact_fmpz(h, h, 3, c->t);
-        _fmpz_vec_add(w, w, h, 3);
-    }
+        _fmpz_vec_sub(w, w, F->facets + 3 * i, 3);
     for (i = 0; i < k && ok; i++)
         ok = _wc_zvec3_dot_sgn_fast(w, GV(c, i), c->t) > 0;
     if (!ok)
+        _wc_fan3_clear(F);
+    return ok;
+}
+
+/* The chart d . x = 1 of a cone with d . g > 0 for every generator:
+   coordinates (g_j1, g_j2) / (d . g) for the two indices other than one
+   where d is not 0.  */
+typedef struct
+{
+    const fmpz * G;
+    fmpz * dg;                  /* k: d . g_i */
+    int j1, j2, s;              /* s: the sign of det(e_j1, e_j2, d) */
+    fmpz_t t, u;
+}
+chart_ctx;
+
+/* Lexicographic order of the chart points.  */
+static int
+chart_cmp(void * ctx, slong a, slong b)
+{
+    chart_ctx * c = ctx;
+    int j, r = 0;
+
+    for (j = 0; j < 2 && r == 0; j++)
     {
-        _fmpz_vec_clear(N, 3 * m);
-        return 0;
+        int i = j == 0 ? c->j1 : c->j2;
+
+        fmpz_mul(c->t, c->G + 3 * a + i, c->dg + b);
+        fmpz_mul(c->u, c->G + 3 * b + i, c->dg + a);
+        r = fmpz_cmp(c->t, c->u);
     }
-    _wc_fan3_clear(F);
-    F->m = m;
-    F->rays = _fmpz_vec_init(3 * m);
-    F->facets = N;
-    for (i = 0; i < m; i++)
+    return r;
+}
+
+/* 1 when the chart points a, b, x turn left.  */
+static int
+chart_left(chart_ctx * c, slong a, slong b, slong x)
+{
+    return c->s * det_sgn(c->G + 3 * a, c->G + 3 * b, c->G + 3 * x, c->t,
+                          c->u) > 0;
+}
+
+/* Andrew's monotone chain over the sorted chart points x[0..k) into H
+   (2k slots): the hull, counterclockwise in the chart, without points on
+   its edges.  Returns its size.  */
+static slong
+chain(chart_ctx * c, const slong * x, slong k, slong * H)
+{
+    slong i, m = 0, low;
+
+    for (i = 0; i < k; i++)
     {
-        _fmpz_vec_set(F->rays + 3 * i, GV(c, S[i]), 3);
-        _fmpz_vec_neg(N + 3 * i, N + 3 * i, 3);
+        while (m >= 2 && !chart_left(c, H[m - 2], H[m - 1], x[i]))
+            m--;
+        H[m++] = x[i];
     }
-    return 1;
+    low = m + 1;
+    for (i = k - 2; i >= 0; i--)
+    {
+        while (m >= low && !chart_left(c, H[m - 2], H[m - 1], x[i]))
+            m--;
+        H[m++] = x[i];
+    }
+    return m - 1;
+}
+
+/* F := the fan of pos(G), which d proves pointed (d . g > 0 for every
+   generator; G spans R^3).  O(k log k).  */
+static int
+chart_fan(_wc_fan3_t F, const fmpz * G, slong k, const fmpz * d)
+{
+    chart_ctx c;
+    slong * x = malloc(sizeof(slong) * 4 * k), i, m;
+    int j, res = x == NULL ? WC_FAN3_NOMEM : WC_FAN3_POINTED;
+
+    c.G = G;
+    c.dg = _fmpz_vec_init(k);
+    fmpz_init(c.t);
+    fmpz_init(c.u);
+    for (j = 0; fmpz_is_zero(d + j); j++)
+        ;
+    c.j1 = (j + 1) % 3;
+    c.j2 = (j + 2) % 3;
+    c.s = fmpz_sgn(d + j);      /* det(e_j+1, e_j+2, d) = d_j */
+    if (x != NULL)
+    {
+        for (i = 0; i < k; i++)
+        {
+            _fmpz_vec_dot(c.dg + i, d, G + 3 * i, 3);
+            x[i] = i;
+        }
+        sort_idx(chart_cmp, &c, x, x + k, k);
+        m = chain(&c, x, k, x + k);
+        if (c.s < 0)            /* det > 0 along the fan */
+            for (i = 0; i < m / 2; i++)
+            {
+                slong y = x[k + i];
+
+                x[k + i] = x[k + m - 1 - i];
+                x[k + m - 1 - i] = y;
+            }
+        fill(F, G, x + k, m, c.t);
+    }
+    _fmpz_vec_clear(c.dg, k);
+    fmpz_clear(c.t);
+    fmpz_clear(c.u);
+    free(x);
+    return res;
+}
+
+/* When the angular scan does not settle a cone spanning R^3: the exact
+   linear program of polar3.c says pointed (then the chart's hull), R^3,
+   or neither.  */
+static int
+by_polar(_wc_fan3_t F, const fmpz * G, slong k)
+{
+    fmpz * V = _fmpz_vec_init(6);
+    int r = _wc_polar3(V, G, k);
+
+    r = r == WC_POLAR3_NOMEM ? WC_FAN3_NOMEM
+        : r == WC_POLAR3_SPACE ? WC_FAN3_SPACE
+        : r == WC_POLAR3_POINTED ? chart_fan(F, G, k, V) : WC_FAN3_OTHER;
+    _fmpz_vec_clear(V, 6);
+    return r;
 }
 
 /* q != 0, the generators span R^3, c->qx is set: the angular sort and
@@ -423,12 +583,14 @@ fan_axis(_wc_fan3_t F, fan_ctx * c, const fmpz * q, slong k, slong * x,
                            && _wc_zvec3_dot_sgn_fast(r, GV(c, i), c->t) > 0));
         x[p++] = i;
     }
-    sort_idx(c, x, y, p);
+    sort_idx(ang_cmp, c, x, y, p);
     p = outermost(c, x, p, w);
     if (p < 3)
         goto done;
     s = farthest(c, q, x, p);
     m = scan(c, q, x, p, s, z);
+    if (m >= 3 && !contained(c, x, p, s, z, m))
+        m = 0;
     if (m >= 3 && certify(F, c, z, m, k, w))
         res = WC_FAN3_POINTED;
     else if (space_by_triple(c, q, x, p, y))
@@ -489,6 +651,8 @@ _wc_fan3(_wc_fan3_t F, const fmpz * G, slong k)
         res = WC_FAN3_NOMEM;
     else if (!planar)
         res = fan_axis(F, &c, q, k, x, x + k, x + 2 * k, w);
+    if (res == WC_FAN3_OTHER && !planar)
+        res = by_polar(F, G, k);
 
 cleanup:
     _fmpz_vec_clear(q, 3);

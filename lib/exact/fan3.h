@@ -8,9 +8,9 @@
    interior point: its m extreme rays, in counterclockwise order around
    that point, and the m facets between cyclically consecutive rays.
    _wc_fan3 finds them, or recognises R^3, in O(k log k) exact integer
-   predicates (signs of 3x3 determinants); every other cone (lower
-   dimension, lineality 1 or 2, and an R^3 it cannot certify cheaply) is
-   left to the general kernel.  */
+   predicates (signs of 3x3 determinants), whatever the angles between
+   the generators; every other cone (lower dimension, lineality 1 or 2)
+   is left to the general kernel.  */
 
 #ifndef WC_EXACT_FAN3_H
 #define WC_EXACT_FAN3_H

@@ -30,13 +30,4 @@ int _wc_hull3_h_to_v(fmpq_mat_t rays, fmpq_mat_t lines, const fmpq_mat_t E,
 int _wc_hull3_generators(fmpz_mat_t G, slong * k, const fmpq_mat_t rays,
                          const fmpq_mat_t lines);
 
-/* How a conversion will go: 1 when _wc_hull3_v_to_h(rows as rays, lin as
-   lines) -- or, with h != 0, _wc_hull3_h_to_v(lin as equalities, rows as
-   inequalities) -- takes an O(k) case or the certified O(k log k) fan; 0
-   when it needs the general search, O(k^2) in the k rows (a cone of
-   dimension 3 with lineality 1 or 2, or a pointed one the fan does not
-   certify); -1 when out of memory.  Costs O(k log k): callers facing
-   untrusted sizes ask first.  */
-int _wc_hull3_is_fast(const fmpq_mat_t rows, const fmpq_mat_t lin, int h);
-
 #endif

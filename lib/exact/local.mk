@@ -11,6 +11,7 @@ lib_libwc_la_SOURCES += \
 	lib/exact/lp.c \
 	lib/exact/hull3.c \
 	lib/exact/fan3.c \
+	lib/exact/polar3.c \
 	lib/exact/cone3.c \
 	lib/exact/arrangement.c \
 	lib/exact/cells.c \
@@ -33,6 +34,7 @@ noinst_HEADERS += \
 	lib/exact/lp.h \
 	lib/exact/hull3.h \
 	lib/exact/fan3.h \
+	lib/exact/polar3.h \
 	lib/exact/cone3.h \
 	lib/exact/arrangement.h \
 	lib/exact/incidence.h \

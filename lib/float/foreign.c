@@ -22,7 +22,6 @@
 #include "core/text.h"
 #include "core/problem.h"
 #include "exact/vec3.h"
-#include "exact/hull3.h"
 
 static void
 qv3_swap(fmpq * a, fmpq * b)
@@ -643,39 +642,6 @@ cleanup:
     return status;
 }
 
-/* The cost bound: a large representation must take the near-linear
-   conversion (hull3.h), asked before any comparison.  */
-static int
-check_cost(const wc_foreign_t F, const _wc_source * s)
-{
-    slong i;
-
-    for (i = 0; i < F->nreps; i++)
-    {
-        const wc_rep_struct * P = F->reps + i;
-        slong k;
-        int r;
-
-        if (P->empty || P->kind == WC_REP_STATED)
-            continue;
-        k = fmpq_mat_nrows(P->rows) + fmpq_mat_nrows(P->lin);
-        if (k <= WC_FOREIGN_MAX_GENERAL)
-            continue;
-        r = _wc_hull3_is_fast(P->rows, P->lin,
-                              P->kind == WC_REP_INEQUALITIES);
-        if (r < 0)
-            return wc_error_set(s->err, WC_EINTERNAL, NULL, 0, 0,
-                                "out of memory");
-        if (r == 0)
-            return _wc_located(s, P->line, 1, "this cone has %ld rows; a "
-                               "cone of dimension 3 that is not pointed (or "
-                               "that the fast exact conversion does not "
-                               "certify) may have at most %d",
-                               (long) k, WC_FOREIGN_MAX_GENERAL);
-    }
-    return WC_OK;
-}
-
 int
 wc_foreign_parse(wc_foreign_t F, const char * text, size_t len,
                  const char * file, wc_error_t err)
@@ -699,8 +665,6 @@ wc_foreign_parse(wc_foreign_t F, const char * text, size_t len,
     }
     else
         status = _wc_foreign_parse_cdd(F, &s);
-    if (status == WC_OK)
-        status = check_cost(F, &s);
     if (status != WC_OK)
         wc_foreign_clear(F);
     return status;

@@ -23,11 +23,6 @@
    with the size of the numbers, and a float cone in R^3 from real code
    has fewer rows, numbers far shorter.  */
 #define WC_FOREIGN_MAX_ROWS 100000
-/* ... except for a cone the near-linear conversion does not take (a cone
-   of dimension 3 with lineality 1 or 2, or a pointed one it does not
-   certify): the general search is quadratic, so such a representation
-   may have at most this many rows.  */
-#define WC_FOREIGN_MAX_GENERAL 1000
 #define WC_FOREIGN_MAX_CHARS 1000
 #define WC_FOREIGN_MAX_EXPONENT 1000
 
