@@ -25,20 +25,6 @@
 
 #define ROW(A, i) ((A)->rows[i])
 
-static char *
-json_of(const wc_cone_t W)
-{
-    char * buf = NULL;
-    size_t len = 0;
-    FILE * f = open_memstream(&buf, &len);
-
-    if (f == NULL)
-        wctest_fail("open_memstream failed");
-    wc_cone_fprint_json(f, W);
-    fclose(f);
-    return buf;
-}
-
 static int
 dot_sgn_q(const fmpz * h, const fmpq * g)
 {
@@ -266,8 +252,8 @@ check_mode(const wc_problem_t P, const char * mode, int members)
         wctest_fail_problem(P, mode, "direct route failed: %s", err->message);
     if (wc_wrench_cone_paper(B, NULL, P, mode, err) != WC_OK)
         wctest_fail_problem(P, mode, "paper route failed: %s", err->message);
-    ja = json_of(A);
-    jb = json_of(B);
+    ja = wctest_cone_json(A);
+    jb = wctest_cone_json(B);
     if (strcmp(ja, jb) != 0 || !wc_cone_equal(A, B))
         wctest_fail_problem(P, mode, "routes differ:\n direct %s\n paper  %s",
                             ja, jb);

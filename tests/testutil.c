@@ -7,6 +7,8 @@
    The generator is splitmix64 (Steele, Lea and Flood, 2014): one 64-bit
    word of state, so an iteration is replayed by setting that word alone.  */
 
+#include <config.h>
+
 #include <errno.h>
 #include <inttypes.h>
 #include <stdarg.h>
@@ -15,6 +17,7 @@
 #include <string.h>
 
 #include "core/problem.h"
+#include "io/print.h"
 #include "testutil.h"
 
 #define WCTEST_DEFAULT_SEED UINT64_C(20021212)
@@ -767,6 +770,22 @@ wctest_load_data(wc_problem_t P, const char * name)
         wctest_fail("%s does not parse: %s", path, err->message);
     wc_error_clear(err);
     free(text);
+}
+
+char *
+wctest_cone_json(const wc_cone_t W)
+{
+    char * buf = NULL;
+    size_t len = 0;
+    FILE * f = open_memstream(&buf, &len);
+    int status;
+
+    if (f == NULL)
+        wctest_fail("open_memstream failed");
+    status = wc_cone_fprint_json(f, W);
+    if (fclose(f) != 0 || status != WC_OK)
+        wctest_fail("wc_cone_fprint_json failed");
+    return buf;
 }
 
 void

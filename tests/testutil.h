@@ -23,6 +23,7 @@
 #include <flint/fmpq.h>
 
 #include "core/problem.h"
+#include "exact/cone.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -103,6 +104,10 @@ void wctest_random_mode_kinematic(char * mode, const wc_problem_t P);
    as make check sets it; "." without it); fails the test when it cannot
    be read or parsed.  */
 void wctest_load_data(wc_problem_t P, const char * name);
+
+/* W as wc_cone_fprint_json writes it: a string to free with free();
+   fails the test when it cannot be written.  */
+char * wctest_cone_json(const wc_cone_t W);
 
 /* g = (x, y, t).  */
 void wctest_vec3_si(fmpq * g, slong x, slong y, slong t);
