@@ -16,7 +16,6 @@
    Silent on success; every failure is printed to stderr with the line of
    this file that found it, and the exit status is 1.  */
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,29 +25,8 @@
 #include "check/verify.h"
 #include "testutil.h"
 
-static int failures = 0;
-
+#define fail(line, ...) wctest_report("t-verify.c", line, __VA_ARGS__)
 #define FAIL(...) fail(__LINE__, __VA_ARGS__)
-
-static void
-fail(int line, const char * fmt, ...)
-#ifdef __GNUC__
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static void
-fail(int line, const char * fmt, ...)
-{
-    va_list ap;
-
-    fprintf(stderr, "t-verify.c:%d: ", line);
-    va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
-    va_end(ap);
-    fputc('\n', stderr);
-    failures++;
-}
 
 static void *
 xmalloc(size_t n)
@@ -2434,10 +2412,10 @@ main(void)
     test_faces_cross();
     test_classify_cross();
     flint_cleanup_master();
-    if (failures > 0)
+    if (wctest_failures() > 0)
     {
-        fprintf(stderr, "t-verify: %d failure(s) (seed %llu)\n", failures,
-                (unsigned long long) wctest_seed());
+        fprintf(stderr, "t-verify: %d failure(s) (seed %llu)\n",
+                wctest_failures(), (unsigned long long) wctest_seed());
         return 1;
     }
     return 0;

@@ -214,6 +214,27 @@ fail_footer(void)
     fflush(stderr);
 }
 
+static int report_count = 0;
+
+void
+wctest_report(const char * file, int line, const char * fmt, ...)
+{
+    va_list ap;
+
+    fprintf(stderr, "%s:%d: ", file, line);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    report_count++;
+}
+
+int
+wctest_failures(void)
+{
+    return report_count;
+}
+
 void
 wctest_fail(const char * fmt, ...)
 {

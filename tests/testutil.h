@@ -80,6 +80,12 @@ _Noreturn void wctest_fail_problem(const wc_problem_t P, const char * mode,
                                    const char * fmt, ...)
     WCTEST_PRINTF(3, 4);
 
+/* For tests that go on after a failure: write "FILE:LINE: message" on
+   stderr and count it.  wctest_failures says how many so far.  */
+void wctest_report(const char * file, int line, const char * fmt, ...)
+    WCTEST_PRINTF(3, 4);
+int wctest_failures(void);
+
 /* "(1, -2/3, 0)": a malloc'd string for messages; free with flint_free.  */
 char * wctest_vec_str(const fmpq * v, slong len);
 
