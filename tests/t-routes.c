@@ -25,26 +25,6 @@
 
 #define ROW(A, i) ((A)->rows[i])
 
-static int
-dot_sgn_q(const fmpz * h, const fmpq * g)
-{
-    fmpq_t s, t;
-    slong j;
-    int r;
-
-    fmpq_init(s);
-    fmpq_init(t);
-    for (j = 0; j < 3; j++)
-    {
-        fmpq_mul_fmpz(t, g + j, h + j);
-        fmpq_add(s, s, t);
-    }
-    r = fmpq_sgn(s);
-    fmpq_clear(s);
-    fmpq_clear(t);
-    return r;
-}
-
 /* Membership read from the canonical output, face by face: g lies in the
    relative interior of face F iff it satisfies the equalities, is tight on
    exactly the facets that contain all of F's rays, and strictly inside the
@@ -59,7 +39,7 @@ member_from_faces(const wc_cone_t W, const fmpq * g)
     if (W->empty)
         return 0;
     for (i = 0; i < fmpz_mat_nrows(W->eqs); i++)
-        if (dot_sgn_q(ROW(W->eqs, i), g) != 0)
+        if (wctest_dot3_sgn_z(ROW(W->eqs, i), g) != 0)
             return 0;
     m = fmpz_mat_nrows(W->ineqs);
     for (f = 0; f < W->nfaces; f++)
@@ -69,7 +49,7 @@ member_from_faces(const wc_cone_t W, const fmpq * g)
 
         for (i = 0; i < m && ok; i++)
         {
-            int contains = 1, s = dot_sgn_q(ROW(W->ineqs, i), g);
+            int contains = 1, s = wctest_dot3_sgn_z(ROW(W->ineqs, i), g);
 
             for (j = 0; j < F->nrays && contains; j++)
             {

@@ -838,3 +838,23 @@ wctest_dot3(fmpq_t r, const fmpq * a, const fmpq * b)
     }
     fmpq_clear(t);
 }
+
+int
+wctest_dot3_sgn_z(const fmpz * h, const fmpq * g)
+{
+    fmpq_t s, t;
+    slong j;
+    int r;
+
+    fmpq_init(s);
+    fmpq_init(t);
+    for (j = 0; j < 3; j++)
+    {
+        fmpq_mul_fmpz(t, g + j, h + j);
+        fmpq_add(s, s, t);
+    }
+    r = fmpq_sgn(s);
+    fmpq_clear(s);
+    fmpq_clear(t);
+    return r;
+}

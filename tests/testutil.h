@@ -124,6 +124,9 @@ int wctest_vec3_is_zero(const fmpq * v);
 /* r = a . b, over three entries; r may not alias a or b.  */
 void wctest_dot3(fmpq_t r, const fmpq * a, const fmpq * b);
 
+/* The sign of h . g, over three entries, h integer.  */
+int wctest_dot3_sgn_z(const fmpz * h, const fmpq * g);
+
 #ifdef __cplusplus
 }
 #endif
