@@ -31,18 +31,6 @@
 /* ---- helpers ------------------------------------------------------- */
 
 static void
-add_fixel(wc_problem_t P, slong px, slong py, slong nx, slong ny)
-{
-    wc_fixel_struct * f = wc_problem_add_fixel(P);
-
-    fmpq_set_si(f->point + 0, px, 1);
-    fmpq_set_si(f->point + 1, py, 1);
-    fmpq_set_si(f->normal + 0, nx, 1);
-    fmpq_set_si(f->normal + 1, ny, 1);
-    f->state = WC_NEAR;
-}
-
-static void
 set_friction(wc_problem_t P, slong num, slong den)
 {
     slong i;
@@ -97,8 +85,8 @@ three_fixels(wc_problem_t P, slong num, slong den)
 static void
 paper_disk(wc_problem_t P, slong num, slong den)
 {
-    add_fixel(P, 0, -1, 0, 1);
-    add_fixel(P, 1, 0, -1, 0);
+    wctest_fixel_si(P, 0, -1, 0, 1, WC_NEAR);
+    wctest_fixel_si(P, 1, 0, -1, 0, WC_NEAR);
     set_friction(P, num, den);
 }
 
@@ -656,8 +644,8 @@ check_complete_beats_goal(void)
     wc_problem_init(P);
     for (j = 0; j < 3; j++)
         fmpq_init(g + j);
-    add_fixel(P, 1, -1, 0, 1);
-    add_fixel(P, -1, 1, 1, 0);
+    wctest_fixel_si(P, 1, -1, 0, 1, WC_NEAR);
+    wctest_fixel_si(P, -1, 1, 1, 0, WC_NEAR);
     set_friction(P, 0, 1);
 
     wctest_vec3_si(g, -4, 1, 0);

@@ -489,10 +489,8 @@ scaled_copy(fmpq * d, const fmpq * v, slong neg, slong den)
     fmpq_clear(s);
 }
 
-/* 1 when fixels a and b are at the same point with normals pointing the
-   same way: an invalid problem (wrenchcone(5)).  */
-static int
-same_contact(const wc_fixel_struct * a, const wc_fixel_struct * b)
+int
+wctest_same_contact(const wc_fixel_struct * a, const wc_fixel_struct * b)
 {
     fmpq_t x, y;
     int same;
@@ -732,7 +730,7 @@ wctest_random_problem(wc_problem_t P, slong nmin, slong nmax)
     /* Never two fixels at one point with the same normal direction.  */
     for (i = 1; i < n; i++)
         for (j = 0; j < i; j++)
-            if (same_contact(P->fixels + i, P->fixels + j))
+            if (wctest_same_contact(P->fixels + i, P->fixels + j))
             {
                 rand_normal(P->fixels[i].normal);
                 j = -1;         /* recheck against all */
@@ -807,6 +805,20 @@ wctest_cone_json(const wc_cone_t W)
     if (fclose(f) != 0 || status != WC_OK)
         wctest_fail("wc_cone_fprint_json failed");
     return buf;
+}
+
+wc_fixel_struct *
+wctest_fixel_si(wc_problem_t P, slong px, slong py, slong nx, slong ny,
+                wc_fixel_state state)
+{
+    wc_fixel_struct * f = wc_problem_add_fixel(P);
+
+    fmpq_set_si(f->point + 0, px, 1);
+    fmpq_set_si(f->point + 1, py, 1);
+    fmpq_set_si(f->normal + 0, nx, 1);
+    fmpq_set_si(f->normal + 1, ny, 1);
+    f->state = state;
+    return f;
 }
 
 void

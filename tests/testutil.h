@@ -115,6 +115,15 @@ void wctest_load_data(wc_problem_t P, const char * name);
    fails the test when it cannot be written.  */
 char * wctest_cone_json(const wc_cone_t W);
 
+/* Add to P a fixel at (px, py) with normal (nx, ny), in the given state
+   (friction as wc_problem_add_fixel sets it); returns it.  */
+wc_fixel_struct * wctest_fixel_si(wc_problem_t P, slong px, slong py,
+                                  slong nx, slong ny, wc_fixel_state state);
+
+/* 1 when fixels a and b are at the same point with normals pointing the
+   same way: an invalid problem (wrenchcone(5)).  */
+int wctest_same_contact(const wc_fixel_struct * a, const wc_fixel_struct * b);
+
 /* g = (x, y, t).  */
 void wctest_vec3_si(fmpq * g, slong x, slong y, slong t);
 
