@@ -298,28 +298,6 @@ check_pinch(void)
 
 /* ---- constructive members ------------------------------------------ */
 
-/* J's column for direction d at fixel f: (d_x, d_y, (p - com) x d).  */
-static void
-wrench_of(fmpq * w, const wc_problem_t P, const wc_fixel_struct * f,
-          const fmpq * d)
-{
-    fmpq_t rx, ry, t;
-
-    fmpq_init(rx);
-    fmpq_init(ry);
-    fmpq_init(t);
-    fmpq_sub(rx, f->point + 0, P->com + 0);
-    fmpq_sub(ry, f->point + 1, P->com + 1);
-    fmpq_set(w + 0, d + 0);
-    fmpq_set(w + 1, d + 1);
-    fmpq_mul(w + 2, rx, d + 1);
-    fmpq_mul(t, ry, d + 0);
-    fmpq_sub(w + 2, w + 2, t);
-    fmpq_clear(rx);
-    fmpq_clear(ry);
-    fmpq_clear(t);
-}
-
 /* Build a wrench that must lie in W(mode) for the mode built alongside:
    choose a set S of fixels to keep in contact (a_n = 0), an acceleration
    nudot with J_n^T nudot = 0 on S (Gram-Schmidt in exact arithmetic),
@@ -357,7 +335,7 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
         keep[i] = wctest_chance(1, 2);
         if (!keep[i])
             continue;
-        wrench_of(w, P, P->fixels + i, P->fixels[i].normal);
+        wctest_wrench_of(w, P, P->fixels + i, P->fixels[i].normal);
         for (k = 0; k < nb; k++)
         {
             wctest_dot3(t, w, basis + 3 * k);
@@ -403,11 +381,11 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
         const wc_fixel_struct * f = P->fixels + i;
         int sa;
 
-        wrench_of(w, P, f, f->normal);
+        wctest_wrench_of(w, P, f, f->normal);
         wctest_dot3(an, w, nudot);
         fmpq_neg(d + 0, f->normal + 1);
         fmpq_set(d + 1, f->normal + 0);
-        wrench_of(w, P, f, d);
+        wctest_wrench_of(w, P, f, d);
         wctest_dot3(at, w, nudot);
         fmpq_zero(cn);
         fmpq_zero(ct);
@@ -448,13 +426,13 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
             }
         }
         /* g -= c_n J_n + c_t J_t */
-        wrench_of(w, P, f, f->normal);
+        wctest_wrench_of(w, P, f, f->normal);
         for (j = 0; j < 3; j++)
         {
             fmpq_mul(t, cn, w + j);
             fmpq_sub(g + j, g + j, t);
         }
-        wrench_of(w, P, f, d);
+        wctest_wrench_of(w, P, f, d);
         for (j = 0; j < 3; j++)
         {
             fmpq_mul(t, ct, w + j);

@@ -352,23 +352,22 @@ static void
 free_an(fmpq_t an, const wc_problem_t P, const wc_fixel_struct * f,
         const fmpq * g)
 {
-    fmpq_t r0, r1, t;
+    fmpq w[3];
+    fmpq_t t;
+    int j;
 
-    fmpq_init(r0);
-    fmpq_init(r1);
+    for (j = 0; j < 3; j++)
+        fmpq_init(w + j);
     fmpq_init(t);
-    fmpq_sub(r0, f->point + 0, P->com + 0);
-    fmpq_sub(r1, f->point + 1, P->com + 1);
-    fmpq_mul(an, f->normal + 0, g + 0);
-    fmpq_addmul(an, f->normal + 1, g + 1);
+    wctest_wrench_of(w, P, f, f->normal);
+    fmpq_mul(an, w + 0, g + 0);
+    fmpq_addmul(an, w + 1, g + 1);
     fmpq_div(an, an, P->mass);
-    fmpq_mul(t, r0, f->normal + 1);
-    fmpq_submul(t, r1, f->normal + 0);
-    fmpq_mul(t, t, g + 2);
+    fmpq_mul(t, w + 2, g + 2);
     fmpq_div(t, t, P->inertia);
     fmpq_add(an, an, t);
-    fmpq_clear(r0);
-    fmpq_clear(r1);
+    for (j = 0; j < 3; j++)
+        fmpq_clear(w + j);
     fmpq_clear(t);
 }
 

@@ -48,13 +48,7 @@ static void
 jcol(fmpq * col, const wc_problem_struct * P, slong i, int side)
 {
     const wc_fixel_struct * f = P->fixels + i;
-    fmpq_t rx, ry, t;
 
-    fmpq_init(rx);
-    fmpq_init(ry);
-    fmpq_init(t);
-    fmpq_sub(rx, f->point + 0, P->com + 0);
-    fmpq_sub(ry, f->point + 1, P->com + 1);
     if (side == 0)
     {
         fmpq_set(col + 0, f->normal + 0);
@@ -65,12 +59,7 @@ jcol(fmpq * col, const wc_problem_struct * P, slong i, int side)
         fmpq_neg(col + 0, f->normal + 1);
         fmpq_set(col + 1, f->normal + 0);
     }
-    fmpq_mul(col + 2, rx, col + 1);
-    fmpq_mul(t, ry, col + 0);
-    fmpq_sub(col + 2, col + 2, t);
-    fmpq_clear(rx);
-    fmpq_clear(ry);
-    fmpq_clear(t);
+    wctest_wrench_of(col, P, f, col);
 }
 
 static slong

@@ -822,6 +822,27 @@ wctest_fixel_si(wc_problem_t P, slong px, slong py, slong nx, slong ny,
 }
 
 void
+wctest_wrench_of(fmpq * w, const wc_problem_t P, const wc_fixel_struct * f,
+                 const fmpq * d)
+{
+    fmpq_t rx, ry, t;
+
+    fmpq_init(rx);
+    fmpq_init(ry);
+    fmpq_init(t);
+    fmpq_sub(rx, f->point + 0, P->com + 0);
+    fmpq_sub(ry, f->point + 1, P->com + 1);
+    fmpq_set(w + 0, d + 0);
+    fmpq_set(w + 1, d + 1);
+    fmpq_mul(w + 2, rx, d + 1);
+    fmpq_mul(t, ry, d + 0);
+    fmpq_sub(w + 2, w + 2, t);
+    fmpq_clear(rx);
+    fmpq_clear(ry);
+    fmpq_clear(t);
+}
+
+void
 wctest_vec3_si(fmpq * g, slong x, slong y, slong t)
 {
     fmpq_set_si(g + 0, x, 1);

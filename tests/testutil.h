@@ -124,6 +124,11 @@ wc_fixel_struct * wctest_fixel_si(wc_problem_t P, slong px, slong py,
    same way: an invalid problem (wrenchcone(5)).  */
 int wctest_same_contact(const wc_fixel_struct * a, const wc_fixel_struct * b);
 
+/* w = (d_x, d_y, (p - com) x d): the wrench of a unit force along d at
+   fixel f of P (a column of J).  d may alias w.  */
+void wctest_wrench_of(fmpq * w, const wc_problem_t P,
+                      const wc_fixel_struct * f, const fmpq * d);
+
 /* g = (x, y, t).  */
 void wctest_vec3_si(fmpq * g, slong x, slong y, slong t);
 
