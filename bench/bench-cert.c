@@ -39,17 +39,7 @@ make_problem(wc_problem_t P, int cradle, slong n)
 
     if (!cradle)
     {
-        wc_random_options opt;
-        wc_error_t err;
-
-        wc_random_options_init(&opt);
-        wc_error_init(err);
-        opt.fixels = n;
-        opt.seed = 1;
-        if (wc_random_problem(P, &opt, err) != WC_OK)
-            wcbench_die("bench-cert", "wc_random_problem", err);
-        wc_error_clear(err);
-        wc_random_options_clear(&opt);
+        wcbench_random_problem(P, n, "bench-cert");
         return;
     }
     fmpq_set_si(P->mu_s, 1, 3);

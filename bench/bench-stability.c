@@ -86,17 +86,7 @@ make_problem(wc_problem_t P, int fam, slong n)
 
     if (fam == FAM_RANDOM)
     {
-        wc_random_options opt;
-        wc_error_t err;
-
-        wc_random_options_init(&opt);
-        wc_error_init(err);
-        opt.fixels = n;
-        opt.seed = 1;
-        if (wc_random_problem(P, &opt, err) != WC_OK)
-            wcbench_die("bench-stability", "wc_random_problem", err);
-        wc_error_clear(err);
-        wc_random_options_clear(&opt);
+        wcbench_random_problem(P, n, "bench-stability");
         return;
     }
     /* The cradle: friction 1/3 everywhere (set before adding fixels,

@@ -131,3 +131,19 @@ wcbench_slope(const double * x, const double * y, slong len)
         return NAN;
     return (len * sxy - sx * sy) / (len * sxx - sx * sx);
 }
+
+void
+wcbench_random_problem(wc_problem_t P, slong n, const char * prog)
+{
+    wc_random_options opt;
+    wc_error_t err;
+
+    wc_random_options_init(&opt);
+    wc_error_init(err);
+    opt.fixels = n;
+    opt.seed = 1;
+    if (wc_random_problem(P, &opt, err) != WC_OK)
+        wcbench_die(prog, "wc_random_problem", err);
+    wc_error_clear(err);
+    wc_random_options_clear(&opt);
+}

@@ -17,6 +17,10 @@ double wcbench_now(void);
 /* Print "PROG: what: message" on stderr and exit with status 3.  */
 void wcbench_die(const char * prog, const char * what, const wc_error_t err);
 
+/* P (freshly initialised) := wc_random_problem's problem of n fixels
+   with seed 1; prog names the benchmark should it fail.  */
+void wcbench_random_problem(wc_problem_t P, slong n, const char * prog);
+
 /* The problems of bench-cone and bench-ppl: P (initialised, no fixels)
    gets n touching fixels at distinct rational points of the unit circle
    with inward normals, friction 1/5 (mu_k 1/10), mass 3/2, inertia 2/3,

@@ -26,7 +26,7 @@ cli_input(_wc_input * in, const char * path)
 }
 
 int
-cli_run_json(const _wc_request * R)
+cli_run_print(const _wc_request * R, void (*print)(const _wc_answer * A))
 {
     _wc_answer A;
     wc_error_t err;
@@ -39,7 +39,7 @@ cli_run_json(const _wc_request * R)
         cli_report(err, status);
     else
     {
-        _wc_answer_fprint_json(stdout, &A);
+        print(&A);
         status = cli_finish_output();
         if (status == WC_OK)
             status = _wc_answer_status(&A);
@@ -47,6 +47,18 @@ cli_run_json(const _wc_request * R)
     wc_error_clear(err);
     _wc_answer_clear(&A);
     return status;
+}
+
+static void
+print_json(const _wc_answer * A)
+{
+    _wc_answer_fprint_json(stdout, A);
+}
+
+int
+cli_run_json(const _wc_request * R)
+{
+    return cli_run_print(R, print_json);
 }
 
 /* The lines are gathered in memory and written once all are computed:

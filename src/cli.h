@@ -145,9 +145,13 @@ int cli_run_with_output(int (*run)(const cli_command *, int, char **),
    stdin, named "<stdin>").  */
 void cli_input(_wc_input * in, const char * path);
 
-/* Answer R and print its JSON (exactly what batch and wc_request_json
-   give), or report its error: the exit status (4 for a comparison beyond
-   its tolerance).  */
+/* Answer R and print the answer with print (on stdout), or report its
+   error: the exit status (4 for a comparison beyond its tolerance).  */
+int cli_run_print(const _wc_request * R,
+                  void (*print)(const _wc_answer * A));
+
+/* cli_run_print with the answer's JSON (exactly what batch and
+   wc_request_json give).  */
 int cli_run_json(const _wc_request * R);
 
 /* cone --all-modes: every mode's cone JSON, one line each, written once

@@ -73,6 +73,13 @@ parse(double * tol, int * json, const cli_command * self, int argc,
     return c == CLI_EXIT ? p.status : -1;
 }
 
+static void
+print_comparison(const _wc_answer * A)
+{
+    wc_comparison_fprint(stdout, A->cmp, A->W, A->R->problem.name,
+                         A->R->mode, A->R->foreign.name, 0);
+}
+
 int
 cmd_compare(const cli_command * self, int argc, char ** argv)
 {
@@ -80,8 +87,6 @@ cmd_compare(const cli_command * self, int argc, char ** argv)
     int json = 0, status;
     const char * ppath, * mode, * fpath;
     _wc_request R;
-    _wc_answer A;
-    wc_error_t err;
 
     if ((status = parse(&tol, &json, self, argc, argv)) >= 0)
         return status;
@@ -101,22 +106,5 @@ cmd_compare(const cli_command * self, int argc, char ** argv)
     R.mode = mode;
     cli_input(&R.foreign, fpath);
     R.tol = tol;
-    if (json)
-        return cli_run_json(&R);
-    _wc_answer_init(&A);
-    wc_error_init(err);
-    status = _wc_run(&A, &R, err);
-    if (status != WC_OK)
-        cli_report(err, status);
-    else
-    {
-        wc_comparison_fprint(stdout, A.cmp, A.W, R.problem.name, mode,
-                             R.foreign.name, 0);
-        status = cli_finish_output();
-        if (status == WC_OK)
-            status = _wc_answer_status(&A);
-    }
-    wc_error_clear(err);
-    _wc_answer_clear(&A);
-    return status;
+    return json ? cli_run_json(&R) : cli_run_print(&R, print_comparison);
 }

@@ -32,15 +32,19 @@ const struct option cmd_modes_options[] = {
     { NULL, 0, NULL, 0 }
 };
 
+static void
+print_modes(const _wc_answer * A)
+{
+    wc_modes_fprint(stdout, A->M, 0, A->R->witness);
+}
+
 int
 cmd_modes(const cli_command * self, int argc, char ** argv)
 {
     cli_options p;
     cli_format fmt = FMT_TEXT;
-    int c, status, witness = 0;
+    int c, witness = 0;
     _wc_request R;
-    _wc_answer A;
-    wc_error_t err;
 
     cli_options_init(&p, self);
     while ((c = cli_option(&p, argc, argv)) >= 0)
@@ -57,19 +61,6 @@ cmd_modes(const cli_command * self, int argc, char ** argv)
     _wc_request_init(&R, _WC_MODES);
     cli_input(&R.problem, argv[optind]);
     R.witness = witness;
-    if (fmt == FMT_JSON)
-        return cli_run_json(&R);
-    _wc_answer_init(&A);
-    wc_error_init(err);
-    status = _wc_run(&A, &R, err);
-    if (status != WC_OK)
-        cli_report(err, status);
-    else
-    {
-        wc_modes_fprint(stdout, A.M, 0, witness);
-        status = cli_finish_output();
-    }
-    wc_error_clear(err);
-    _wc_answer_clear(&A);
-    return status;
+    return fmt == FMT_JSON ? cli_run_json(&R)
+        : cli_run_print(&R, print_modes);
 }

@@ -12,15 +12,10 @@
 # Public License, version 2 or (at your option) any later version.
 
 : "${top_srcdir:?top_srcdir is not set}" "${WRENCHCONE:=$PWD/src/wrenchcone}"
-for tool in xmllint rsvg-convert python3; do
-    command -v $tool >/dev/null 2>&1 || { echo "SKIP: no $tool" >&2; exit 77; }
-done
+. "$top_srcdir/tests/clitest.sh"
+need xmllint rsvg-convert python3
 W=$WRENCHCONE
 cd "$top_srcdir" || exit 99
-tmp=$(mktemp -d) || exit 99
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
 
 # Every problem, every kind (the mode: the problem's first feasible one).
 for f in data/*.wc; do
@@ -89,11 +84,7 @@ pixels --graph data/three-fixels-insert.wc 0.4,3,0,-12,dark 0.4,3,-80,0,light
 # Bad input and usage: status, message, nothing on stdout, no file.
 bad() {
     want=$1 msg=$2; shift 2
-    "$W" draw "$@" >"$tmp/out" 2>"$tmp/err"
-    rc=$?
-    [ $rc -eq "$want" ] || fail "draw $*: exit $rc, not $want"
-    [ -s "$tmp/out" ] && fail "draw $*: wrote on stdout"
-    grep -qF -- "$msg" "$tmp/err" || fail "draw $*: message '$(cat "$tmp/err")'"
+    refused "$want" "$msg" draw "$@"
     [ -e "$tmp/never.svg" ] && fail "draw $*: left a file"
     ls "$tmp" | grep -q 'never.svg.tmp' && fail "draw $*: left a temporary file"
 }
@@ -125,5 +116,5 @@ echo old > "$tmp/keep.svg"
     && cmp -s "$tmp/a.svg" "$tmp/d.svg" \
     && cmp -s "$tmp/a.svg" "$tmp/keep.svg" || fail "-o and stdout differ"
 
-[ $fails -eq 0 ] || { echo "$fails failure(s)" >&2; exit 1; }
+[ $failures -eq 0 ] || { echo "$failures failure(s)" >&2; exit 1; }
 exit 0

@@ -12,15 +12,10 @@
 # Public License, version 2 or (at your option) any later version.
 
 : "${top_srcdir:?top_srcdir is not set}" "${WRENCHCONE:=$PWD/src/wrenchcone}"
-for tool in xmllint python3; do
-    command -v $tool >/dev/null 2>&1 || { echo "SKIP: no $tool" >&2; exit 77; }
-done
+. "$top_srcdir/tests/clitest.sh"
+need xmllint python3
 W=$WRENCHCONE
 cd "$top_srcdir" || exit 99
-tmp=$(mktemp -d) || exit 99
-trap 'rm -rf "$tmp"' EXIT
-fails=0
-fail() { echo "FAIL: $*" >&2; fails=$((fails + 1)); }
 
 for f in data/*.wc; do
     "$W" report "$f" -o "$tmp/r.html" 2>"$tmp/err" \
@@ -61,11 +56,7 @@ fi
 # Bad input and usage.
 bad() {
     want=$1 msg=$2; shift 2
-    "$W" report "$@" >"$tmp/out" 2>"$tmp/err"
-    rc=$?
-    [ $rc -eq "$want" ] || fail "report $*: exit $rc, not $want"
-    [ -s "$tmp/out" ] && fail "report $*: wrote on stdout"
-    grep -qF -- "$msg" "$tmp/err" || fail "report $*: message '$(cat "$tmp/err")'"
+    refused "$want" "$msg" report "$@"
     ls "$tmp" | grep -q 'never' && fail "report $*: left a file"
 }
 bad 1 "data/none.wc" data/none.wc -o "$tmp/never.html"
@@ -74,9 +65,9 @@ bad 2 "unknown or incomplete option '--figure'" --figure data/section4.wc -o "$t
 bad 3 "cannot write the report" data/section4.wc -o "$tmp/no/such/never.html"
 
 if [ -z "$browser" ]; then
-    [ $fails -eq 0 ] || { echo "$fails failure(s)" >&2; exit 1; }
+    [ $failures -eq 0 ] || { echo "$failures failure(s)" >&2; exit 1; }
     echo "SKIP: no chromium (the rest passed)" >&2
     exit 77
 fi
-[ $fails -eq 0 ] || { echo "$fails failure(s)" >&2; exit 1; }
+[ $failures -eq 0 ] || { echo "$failures failure(s)" >&2; exit 1; }
 exit 0

@@ -518,9 +518,7 @@ check_json(const char * what, const char * rays, const char * lines,
     fmpq_mat_t R, L;
     wc_cone_t C;
     wc_error_t err;
-    char * buf = NULL;
-    size_t len = 0;
-    FILE * f;
+    char * buf;
     slong nr = 0, nl = 0, i;
     const char * s;
     char * end;
@@ -539,9 +537,7 @@ check_json(const char * what, const char * rays, const char * lines,
     wc_error_init(err);
     if (wc_cone_set_generators(C, R, L, err) != WC_OK)
         wctest_fail("%s: %s", what, err->message);
-    f = open_memstream(&buf, &len);
-    wc_cone_fprint_json(f, C);
-    fclose(f);
+    buf = wctest_cone_json(C);
     if (strcmp(buf, want) != 0)
         wctest_fail("%s:\n got  %s\n want %s", what, buf, want);
     free(buf);

@@ -59,18 +59,6 @@ traced(const wc_trace_t T, const char * name)
     wctest_fail("the trace has no matrix %s", name);
 }
 
-static char *
-cone_json(const wc_cone_t W)
-{
-    char * buf = NULL;
-    size_t len = 0;
-    FILE * f = open_memstream(&buf, &len);
-
-    wc_cone_fprint_json(f, W);
-    fclose(f);
-    return buf;
-}
-
 int
 main(void)
 {
@@ -150,7 +138,7 @@ main(void)
         wc_trace_init(T);
         if (wc_wrench_cone(Wd, T, P, "na", method, err) != WC_OK)
             wctest_fail("route %d: %s", method, err->message);
-        s = cone_json(Wd);
+        s = wctest_cone_json(Wd);
         if (strcmp(s, want_json) != 0)
             wctest_fail("route %d gives\n%s\nwant\n%s", method, s, want_json);
         free(s);
@@ -216,7 +204,7 @@ main(void)
     if (wc_wrench_cone_direct(Wd, NULL, P, "na", err) != WC_OK
         || wc_wrench_cone_paper(Wp, NULL, P, "na", err) != WC_OK)
         wctest_fail("scaled normals: %s", err->message);
-    s = cone_json(Wd);
+    s = wctest_cone_json(Wd);
     if (strcmp(s, want_json) != 0 || !wc_cone_equal(Wd, Wp))
         wctest_fail("scaled normals change the cone:\n%s", s);
     free(s);

@@ -40,20 +40,6 @@ _Static_assert((int) WC_REL_GT == REF_REL_GT && (int) WC_REL_GE == REF_REL_GE
 
 /* ---- problems ------------------------------------------------------ */
 
-static wc_fixel_struct *
-fixel_si(wc_problem_t P, slong px, slong py, slong nx, slong ny,
-         wc_fixel_state state)
-{
-    wc_fixel_struct * f = wc_problem_add_fixel(P);
-
-    fmpq_set_si(f->point + 0, px, 1);
-    fmpq_set_si(f->point + 1, py, 1);
-    fmpq_set_si(f->normal + 0, nx, 1);
-    fmpq_set_si(f->normal + 1, ny, 1);
-    f->state = state;
-    return f;
-}
-
 /* The paper's unit disk (Sections 4 and 7): fixel 1 touching at (0, -1)
    pushing up, fixel 2 at (1, 0) pushing left, friction 1.  */
 static void
@@ -61,33 +47,8 @@ paper_disk(wc_problem_t P, wc_fixel_state second)
 {
     fmpq_one(P->mu_s);
     fmpq_one(P->mu_k);
-    fixel_si(P, 0, -1, 0, 1, WC_TOUCHING);
-    fixel_si(P, 1, 0, -1, 0, second);
-}
-
-/* 1 when a and b are at one point with normals pointing the same way
-   (not a valid problem, wrenchcone(5)).  */
-static int
-same_contact(const wc_fixel_struct * a, const wc_fixel_struct * b)
-{
-    fmpq_t x, y;
-    int same;
-
-    if (!fmpq_equal(a->point + 0, b->point + 0)
-        || !fmpq_equal(a->point + 1, b->point + 1))
-        return 0;
-    fmpq_init(x);
-    fmpq_init(y);
-    fmpq_mul(x, a->normal + 0, b->normal + 1);
-    fmpq_mul(y, a->normal + 1, b->normal + 0);
-    same = fmpq_equal(x, y);
-    fmpq_mul(x, a->normal + 0, b->normal + 0);
-    fmpq_mul(y, a->normal + 1, b->normal + 1);
-    fmpq_add(x, x, y);
-    same = same && fmpq_sgn(x) > 0;
-    fmpq_clear(x);
-    fmpq_clear(y);
-    return same;
+    wctest_fixel_si(P, 0, -1, 0, 1, WC_TOUCHING);
+    wctest_fixel_si(P, 1, 0, -1, 0, second);
 }
 
 /* A nonzero direction with small entries.  */
@@ -111,7 +72,7 @@ separate_contacts(wc_problem_t P)
 
     for (i = 1; i < P->n; i++)
         for (j = 0; j < i; j++)
-            if (same_contact(P->fixels + i, P->fixels + j))
+            if (wctest_same_contact(P->fixels + i, P->fixels + j))
             {
                 rand_dir(P->fixels[i].normal);
                 j = -1;
@@ -1100,9 +1061,9 @@ test_bad_modes(void)
 
     /* fixels: touching, near, touching */
     wc_problem_init(P);
-    fixel_si(P, 0, -1, 0, 1, WC_TOUCHING);
-    fixel_si(P, 1, 0, -1, 0, WC_NEAR);
-    fixel_si(P, -1, 0, 1, 0, WC_TOUCHING);
+    wctest_fixel_si(P, 0, -1, 0, 1, WC_TOUCHING);
+    wctest_fixel_si(P, 1, 0, -1, 0, WC_NEAR);
+    wctest_fixel_si(P, -1, 0, 1, 0, WC_TOUCHING);
     check_bad_mode(P, "", 1);
     check_bad_mode(P, "sa", 3);
     check_bad_mode(P, "sasn", 4);
@@ -1156,8 +1117,8 @@ test_fixed(void)
     wc_problem_clear(P);
 
     wc_problem_init(P);
-    fixel_si(P, 0, 0, 0, 1, WC_TOUCHING);
-    fixel_si(P, 0, 0, 0, -2, WC_TOUCHING);
+    wctest_fixel_si(P, 0, 0, 0, 1, WC_TOUCHING);
+    wctest_fixel_si(P, 0, 0, 0, -2, WC_TOUCHING);
     check_enumeration(P, pinch, "pinch");
     check_enumeration(P, NULL, "pinch (brute force)");
     check_feasible(P, "ss", "pinch");
@@ -1165,12 +1126,12 @@ test_fixed(void)
     wc_problem_clear(P);
 
     wc_problem_init(P);
-    fixel_si(P, 2, 1, -1, 3, WC_TOUCHING);
+    wctest_fixel_si(P, 2, 1, -1, 3, WC_TOUCHING);
     check_enumeration(P, one_touching, "one touching fixel");
     wc_problem_clear(P);
 
     wc_problem_init(P);
-    fixel_si(P, 2, 1, -1, 3, WC_NEAR);
+    wctest_fixel_si(P, 2, 1, -1, 3, WC_NEAR);
     check_enumeration(P, one_near, "one near fixel");
     wc_problem_clear(P);
 }

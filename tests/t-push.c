@@ -76,26 +76,6 @@ oracle_add1(oracle * O, slong p, int mask)
 }
 
 static int
-sign_hg(const fmpz * h, const fmpq * g)
-{
-    fmpq_t s, t;
-    slong j;
-    int r;
-
-    fmpq_init(s);
-    fmpq_init(t);
-    for (j = 0; j < 3; j++)
-    {
-        fmpq_mul_fmpz(t, g + j, h + j);
-        fmpq_add(s, s, t);
-    }
-    r = fmpq_sgn(s);
-    fmpq_clear(s);
-    fmpq_clear(t);
-    return r;
-}
-
-static int
 oracle_eval(const oracle * O, const fmpq * g)
 {
     slong t, l;
@@ -107,7 +87,7 @@ oracle_eval(const oracle * O, const fmpq * g)
 
         for (l = 0; l < O->nlit[t] && all; l++)
         {
-            int s = sign_hg(ROW(O->H, O->pl[t][l]), g);
+            int s = wctest_dot3_sgn_z(ROW(O->H, O->pl[t][l]), g);
 
             all = (O->mask[t][l] >> (s + 1)) & 1;
         }
@@ -1029,42 +1009,75 @@ expect_disk(const wc_push_t R, const dexp * e, slong n, const char * what)
 
 /* One literal oracle on plane 0 with the given mask (0: empty set, 7:
    everything), checked against expectations and by sampling.  */
+/* O, on H, is the ray h_0 . g = 0, h_1 . g = 0, h_2 . g > 0.  */
 static void
-hand_polygon(const wc_problem_t P, int ccw, const fmpz_mat_t H, int mask,
-             int negate, const pexp * e, slong n, const char * what)
+oracle_ray(oracle * O, fmpz_mat_struct * H)
+{
+    oracle_init(O, H);
+    O->nterms = 1;
+    O->nlit[0] = 3;
+    O->pl[0][0] = 0;
+    O->mask[0][0] = M_ZERO;
+    O->pl[0][1] = 1;
+    O->mask[0][1] = M_ZERO;
+    O->pl[0][2] = 2;
+    O->mask[0][2] = M_POS;
+}
+
+#define DISK (-1)
+
+/* Push P (a polygon, ccw as verify_polygon takes it, or a disk when ccw
+   is DISK) under O, checked against the expected edges pe or arcs de and
+   by sampling.  */
+static void
+hand_check(const wc_problem_t P, int ccw, oracle * O, const fmpz_mat_t H,
+           const pexp * pe, const dexp * de, slong n, const char * what)
+{
+    wc_push_t R;
+
+    wc_push_init(R);
+    run(R, P, H, O);
+    if (ccw == DISK)
+    {
+        expect_disk(R, de, n, what);
+        verify_disk(P, O, H, R, 50);
+    }
+    else
+    {
+        expect_polygon(R, pe, n, what);
+        verify_polygon(P, ccw, O, H, R, 10);
+    }
+    wc_push_clear(R);
+    cur_push = NULL;
+}
+
+/* One literal oracle on plane 0 with the given mask (0: empty set, 7:
+   everything), checked against expectations and by sampling.  */
+static void
+hand(const wc_problem_t P, int ccw, const fmpz_mat_t H, int mask,
+     int negate, const pexp * pe, const dexp * de, slong n, const char * what)
 {
     oracle O;
-    wc_push_t R;
 
     oracle_init(&O, (fmpz_mat_struct *) H);
     if (mask != 0)
         oracle_add1(&O, 0, mask);
     O.negate = negate;
-    wc_push_init(R);
-    run(R, P, H, &O);
-    expect_polygon(R, e, n, what);
-    verify_polygon(P, ccw, &O, H, R, 10);
-    wc_push_clear(R);
-    cur_push = NULL;
+    hand_check(P, ccw, &O, H, pe, de, n, what);
+}
+
+static void
+hand_polygon(const wc_problem_t P, int ccw, const fmpz_mat_t H, int mask,
+             int negate, const pexp * e, slong n, const char * what)
+{
+    hand(P, ccw, H, mask, negate, e, NULL, n, what);
 }
 
 static void
 hand_disk(const wc_problem_t P, const fmpz_mat_t H, int mask, int negate,
           const dexp * e, slong n, const char * what)
 {
-    oracle O;
-    wc_push_t R;
-
-    oracle_init(&O, (fmpz_mat_struct *) H);
-    if (mask != 0)
-        oracle_add1(&O, 0, mask);
-    O.negate = negate;
-    wc_push_init(R);
-    run(R, P, H, &O);
-    expect_disk(R, e, n, what);
-    verify_disk(P, &O, H, R, 50);
-    wc_push_clear(R);
-    cur_push = NULL;
+    hand(P, DISK, H, mask, negate, NULL, e, n, what);
 }
 
 static void
@@ -1123,23 +1136,9 @@ test_hand_polygons(void)
     {
         static const pexp e[1] = { { 0, 1, 2, 1, 1, 2, 1 } };
         oracle O;
-        wc_push_t R;
 
-        oracle_init(&O, H);
-        O.nterms = 1;
-        O.nlit[0] = 3;
-        O.pl[0][0] = 0;
-        O.mask[0][0] = M_ZERO;
-        O.pl[0][1] = 1;
-        O.mask[0][1] = M_ZERO;
-        O.pl[0][2] = 2;
-        O.mask[0][2] = M_POS;
-        wc_push_init(R);
-        run(R, P, H, &O);
-        expect_polygon(R, e, 1, "square, a ray");
-        verify_polygon(P, 1, &O, H, R, 10);
-        wc_push_clear(R);
-        cur_push = NULL;
+        oracle_ray(&O, H);
+        hand_check(P, 1, &O, H, e, NULL, 1, "square, a ray");
     }
 
     /* The same square clockwise: the torque is now 1/2 - s.  */
@@ -1295,28 +1294,14 @@ test_hand_disks(void)
         static const dexp one[1] = { { 1, 0, 1, 1, 0, 1, 0 } };
         static const dexp allbut[1] = { { 1, 0, 0, 1, 0, 0, 0 } };
         oracle O;
-        wc_push_t R;
         int neg;
 
         for (neg = 0; neg <= 1; neg++)
         {
-            oracle_init(&O, H);
-            O.nterms = 1;
-            O.nlit[0] = 3;
-            O.pl[0][0] = 0;
-            O.mask[0][0] = M_ZERO;
-            O.pl[0][1] = 1;
-            O.mask[0][1] = M_ZERO;
-            O.pl[0][2] = 2;
-            O.mask[0][2] = M_POS;
+            oracle_ray(&O, H);
             O.negate = neg;
-            wc_push_init(R);
-            run(R, P, H, &O);
-            expect_disk(R, neg ? allbut : one, 1,
-                        neg ? "disk, all but a ray" : "disk, a ray");
-            verify_disk(P, &O, H, R, 50);
-            wc_push_clear(R);
-            cur_push = NULL;
+            hand_check(P, DISK, &O, H, NULL, neg ? allbut : one, 1,
+                       neg ? "disk, all but a ray" : "disk, a ray");
         }
     }
     /* No planes, or only zero rows and a plane with a = 0: full or

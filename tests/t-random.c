@@ -652,20 +652,6 @@ check_friction(const wc_problem_t P, const wc_random_options * o)
 /* ------------------------------------------------------------------ */
 /* (e) both routes, byte for byte                                      */
 
-static char *
-cone_json(const wc_cone_t W)
-{
-    char * buf = NULL;
-    size_t len = 0;
-    FILE * f = open_memstream(&buf, &len);
-
-    if (f == NULL)
-        wctest_fail("open_memstream failed");
-    wc_cone_fprint_json(f, W);
-    fclose(f);
-    return buf;
-}
-
 static void
 check_routes(const wc_problem_t P, slong modes)
 {
@@ -688,8 +674,8 @@ check_routes(const wc_problem_t P, slong modes)
         if (wc_wrench_cone_paper(B, NULL, P, mode, err) != WC_OK)
             wctest_fail_problem(P, mode, "paper route failed: %s",
                                 err->message);
-        a = cone_json(A);
-        b = cone_json(B);
+        a = wctest_cone_json(A);
+        b = wctest_cone_json(B);
         if (strcmp(a, b) != 0)
             wctest_fail_problem(P, mode,
                                 "routes differ:\ndirect %s\npaper  %s", a, b);

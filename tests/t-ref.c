@@ -36,19 +36,6 @@ vec3_scale(fmpq * r, const fmpq_t s, const fmpq * a)
         fmpq_mul(r + j, s, a + j);
 }
 
-static void
-add_fixel(wc_problem_t P, slong px, slong py, slong nx, slong ny,
-          wc_fixel_state state)
-{
-    wc_fixel_struct * f = wc_problem_add_fixel(P);
-
-    fmpq_set_si(f->point + 0, px, 1);
-    fmpq_set_si(f->point + 1, py, 1);
-    fmpq_set_si(f->normal + 0, nx, 1);
-    fmpq_set_si(f->normal + 1, ny, 1);
-    f->state = state;
-}
-
 /* The unit disk of the paper, M = I, friction mu_num / mu_den: fixel 1
    touching at (0, -1) with normal (0, 1), fixel 2 at (1, 0) with normal
    (-1, 0), near (Section 4) or touching (Figure 5).  */
@@ -58,8 +45,8 @@ paper_disk(wc_problem_t P, wc_fixel_state second, slong mu_num,
 {
     fmpq_set_si(P->mu_s, mu_num, (ulong) mu_den);
     fmpq_set_si(P->mu_k, mu_num, (ulong) mu_den);
-    add_fixel(P, 0, -1, 0, 1, WC_TOUCHING);
-    add_fixel(P, 1, 0, -1, 0, second);
+    wctest_fixel_si(P, 0, -1, 0, 1, WC_TOUCHING);
+    wctest_fixel_si(P, 1, 0, -1, 0, second);
 }
 
 static int
@@ -222,7 +209,7 @@ check_one_fixel(void)
     wc_problem_t P;
 
     wc_problem_init(P);
-    add_fixel(P, 0, -1, 0, 1, WC_TOUCHING);
+    wctest_fixel_si(P, 0, -1, 0, 1, WC_TOUCHING);
     expect_in(P, "n", 1, -2, -1, 1);
     expect_in(P, "n", -1, 0, 1, 1);
     expect_in(P, "n", 0, 0, 0, 1);
@@ -252,7 +239,7 @@ check_one_fixel(void)
     /* one near fixel: W(a) is the open half-space g_y < 0, W(s) the
        closed one g_y >= 0, W(u) everything */
     wc_problem_init(P);
-    add_fixel(P, 0, -1, 0, 1, WC_NEAR);
+    wctest_fixel_si(P, 0, -1, 0, 1, WC_NEAR);
     expect_in(P, "a", 0, -1, 0, 1);
     expect_in(P, "a", 3, -1, -4, 1);
     expect_in(P, "a", 5, 0, 7, 0);
@@ -276,8 +263,8 @@ check_pinch(void)
     wc_problem_init(P);
     fmpq_set_si(P->mu_s, 1, 2);
     fmpq_set_si(P->mu_k, 1, 2);
-    add_fixel(P, 0, 0, 0, 1, WC_TOUCHING);
-    add_fixel(P, 0, 0, 0, -2, WC_TOUCHING);
+    wctest_fixel_si(P, 0, 0, 0, 1, WC_TOUCHING);
+    wctest_fixel_si(P, 0, 0, 0, -2, WC_TOUCHING);
     expect_nonempty(P, "ll", 0);
     expect_nonempty(P, "rr", 0);
     expect_nonempty(P, "lr", 1);
@@ -310,28 +297,6 @@ check_pinch(void)
 }
 
 /* ---- constructive members ------------------------------------------ */
-
-/* J's column for direction d at fixel f: (d_x, d_y, (p - com) x d).  */
-static void
-wrench_of(fmpq * w, const wc_problem_t P, const wc_fixel_struct * f,
-          const fmpq * d)
-{
-    fmpq_t rx, ry, t;
-
-    fmpq_init(rx);
-    fmpq_init(ry);
-    fmpq_init(t);
-    fmpq_sub(rx, f->point + 0, P->com + 0);
-    fmpq_sub(ry, f->point + 1, P->com + 1);
-    fmpq_set(w + 0, d + 0);
-    fmpq_set(w + 1, d + 1);
-    fmpq_mul(w + 2, rx, d + 1);
-    fmpq_mul(t, ry, d + 0);
-    fmpq_sub(w + 2, w + 2, t);
-    fmpq_clear(rx);
-    fmpq_clear(ry);
-    fmpq_clear(t);
-}
 
 /* Build a wrench that must lie in W(mode) for the mode built alongside:
    choose a set S of fixels to keep in contact (a_n = 0), an acceleration
@@ -370,7 +335,7 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
         keep[i] = wctest_chance(1, 2);
         if (!keep[i])
             continue;
-        wrench_of(w, P, P->fixels + i, P->fixels[i].normal);
+        wctest_wrench_of(w, P, P->fixels + i, P->fixels[i].normal);
         for (k = 0; k < nb; k++)
         {
             wctest_dot3(t, w, basis + 3 * k);
@@ -416,11 +381,11 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
         const wc_fixel_struct * f = P->fixels + i;
         int sa;
 
-        wrench_of(w, P, f, f->normal);
+        wctest_wrench_of(w, P, f, f->normal);
         wctest_dot3(an, w, nudot);
         fmpq_neg(d + 0, f->normal + 1);
         fmpq_set(d + 1, f->normal + 0);
-        wrench_of(w, P, f, d);
+        wctest_wrench_of(w, P, f, d);
         wctest_dot3(at, w, nudot);
         fmpq_zero(cn);
         fmpq_zero(ct);
@@ -461,13 +426,13 @@ constructive_member(fmpq * g, char * mode, const wc_problem_t P)
             }
         }
         /* g -= c_n J_n + c_t J_t */
-        wrench_of(w, P, f, f->normal);
+        wctest_wrench_of(w, P, f, f->normal);
         for (j = 0; j < 3; j++)
         {
             fmpq_mul(t, cn, w + j);
             fmpq_sub(g + j, g + j, t);
         }
-        wrench_of(w, P, f, d);
+        wctest_wrench_of(w, P, f, d);
         for (j = 0; j < 3; j++)
         {
             fmpq_mul(t, ct, w + j);

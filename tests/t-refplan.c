@@ -31,18 +31,6 @@
 /* ---- helpers ------------------------------------------------------- */
 
 static void
-add_fixel(wc_problem_t P, slong px, slong py, slong nx, slong ny)
-{
-    wc_fixel_struct * f = wc_problem_add_fixel(P);
-
-    fmpq_set_si(f->point + 0, px, 1);
-    fmpq_set_si(f->point + 1, py, 1);
-    fmpq_set_si(f->normal + 0, nx, 1);
-    fmpq_set_si(f->normal + 1, ny, 1);
-    f->state = WC_NEAR;
-}
-
-static void
 set_friction(wc_problem_t P, slong num, slong den)
 {
     slong i;
@@ -97,8 +85,8 @@ three_fixels(wc_problem_t P, slong num, slong den)
 static void
 paper_disk(wc_problem_t P, slong num, slong den)
 {
-    add_fixel(P, 0, -1, 0, 1);
-    add_fixel(P, 1, 0, -1, 0);
+    wctest_fixel_si(P, 0, -1, 0, 1, WC_NEAR);
+    wctest_fixel_si(P, 1, 0, -1, 0, WC_NEAR);
     set_friction(P, num, den);
 }
 
@@ -358,6 +346,31 @@ check_strings(void)
 
 /* ---- one fixel ------------------------------------------------------ */
 
+/* an = n . g_xy / m + (r x n) g_t / I: fixel f's free normal
+   acceleration under g.  */
+static void
+free_an(fmpq_t an, const wc_problem_t P, const wc_fixel_struct * f,
+        const fmpq * g)
+{
+    fmpq w[3];
+    fmpq_t t;
+    int j;
+
+    for (j = 0; j < 3; j++)
+        fmpq_init(w + j);
+    fmpq_init(t);
+    wctest_wrench_of(w, P, f, f->normal);
+    fmpq_mul(an, w + 0, g + 0);
+    fmpq_addmul(an, w + 1, g + 1);
+    fmpq_div(an, an, P->mass);
+    fmpq_mul(t, w + 2, g + 2);
+    fmpq_div(t, t, P->inertia);
+    fmpq_add(an, an, t);
+    for (j = 0; j < 3; j++)
+        fmpq_clear(w + j);
+    fmpq_clear(t);
+}
+
 /* With one fixel the only needed string is s, W(s) = { a_n >= 0 } for the
    free acceleration a_n = n . g_xy / m + (r x n) g_t / I, so G_goal is the
    open half-space a_n < 0.  The complete model has the states {} and {1}:
@@ -373,7 +386,7 @@ check_one_fixel(void)
     {
         wc_problem_t P;
         fmpq g[3], w[3];
-        fmpq_t an, r0, r1, t;
+        fmpq_t an;
         const wc_fixel_struct * f;
         slong j, k;
         int expected;
@@ -387,25 +400,13 @@ check_one_fixel(void)
             fmpq_init(w + j);
         }
         fmpq_init(an);
-        fmpq_init(r0);
-        fmpq_init(r1);
-        fmpq_init(t);
         wctest_random_problem(P, 1, 1);
         f = P->fixels;
 
         for (k = 0; k < 4; k++)
         {
             wctest_random_wrench(g);
-            fmpq_sub(r0, f->point + 0, P->com + 0);
-            fmpq_sub(r1, f->point + 1, P->com + 1);
-            fmpq_mul(an, f->normal + 0, g + 0);
-            fmpq_addmul(an, f->normal + 1, g + 1);
-            fmpq_div(an, an, P->mass);
-            fmpq_mul(t, r0, f->normal + 1);
-            fmpq_submul(t, r1, f->normal + 0);
-            fmpq_mul(t, t, g + 2);
-            fmpq_div(t, t, P->inertia);
-            fmpq_add(an, an, t);
+            free_an(an, P, f, g);
             expected = fmpq_sgn(an) < 0;
             expect_verdicts(P, g, expected, expected);
         }
@@ -413,16 +414,7 @@ check_one_fixel(void)
         /* a half-space is never empty, and its witness has a_n < 0 */
         if (ref_plan_goal_empty(P, w) != 0)
             wctest_fail_problem(P, NULL, "one fixel: G_goal reported empty");
-        fmpq_sub(r0, f->point + 0, P->com + 0);
-        fmpq_sub(r1, f->point + 1, P->com + 1);
-        fmpq_mul(an, f->normal + 0, w + 0);
-        fmpq_addmul(an, f->normal + 1, w + 1);
-        fmpq_div(an, an, P->mass);
-        fmpq_mul(t, r0, f->normal + 1);
-        fmpq_submul(t, r1, f->normal + 0);
-        fmpq_mul(t, t, w + 2);
-        fmpq_div(t, t, P->inertia);
-        fmpq_add(an, an, t);
+        free_an(an, P, f, w);
         if (fmpq_sgn(an) >= 0)
             wctest_fail_problem(P, NULL, "one fixel: witness with a_n >= 0");
 
@@ -432,9 +424,6 @@ check_one_fixel(void)
             fmpq_clear(w + j);
         }
         fmpq_clear(an);
-        fmpq_clear(r0);
-        fmpq_clear(r1);
-        fmpq_clear(t);
         wc_problem_clear(P);
     }
 }
@@ -654,8 +643,8 @@ check_complete_beats_goal(void)
     wc_problem_init(P);
     for (j = 0; j < 3; j++)
         fmpq_init(g + j);
-    add_fixel(P, 1, -1, 0, 1);
-    add_fixel(P, -1, 1, 1, 0);
+    wctest_fixel_si(P, 1, -1, 0, 1, WC_NEAR);
+    wctest_fixel_si(P, -1, 1, 1, 0, WC_NEAR);
     set_friction(P, 0, 1);
 
     wctest_vec3_si(g, -4, 1, 0);

@@ -25,40 +25,6 @@
 
 #define ROW(A, i) ((A)->rows[i])
 
-static char *
-json_of(const wc_cone_t W)
-{
-    char * buf = NULL;
-    size_t len = 0;
-    FILE * f = open_memstream(&buf, &len);
-
-    if (f == NULL)
-        wctest_fail("open_memstream failed");
-    wc_cone_fprint_json(f, W);
-    fclose(f);
-    return buf;
-}
-
-static int
-dot_sgn_q(const fmpz * h, const fmpq * g)
-{
-    fmpq_t s, t;
-    slong j;
-    int r;
-
-    fmpq_init(s);
-    fmpq_init(t);
-    for (j = 0; j < 3; j++)
-    {
-        fmpq_mul_fmpz(t, g + j, h + j);
-        fmpq_add(s, s, t);
-    }
-    r = fmpq_sgn(s);
-    fmpq_clear(s);
-    fmpq_clear(t);
-    return r;
-}
-
 /* Membership read from the canonical output, face by face: g lies in the
    relative interior of face F iff it satisfies the equalities, is tight on
    exactly the facets that contain all of F's rays, and strictly inside the
@@ -73,7 +39,7 @@ member_from_faces(const wc_cone_t W, const fmpq * g)
     if (W->empty)
         return 0;
     for (i = 0; i < fmpz_mat_nrows(W->eqs); i++)
-        if (dot_sgn_q(ROW(W->eqs, i), g) != 0)
+        if (wctest_dot3_sgn_z(ROW(W->eqs, i), g) != 0)
             return 0;
     m = fmpz_mat_nrows(W->ineqs);
     for (f = 0; f < W->nfaces; f++)
@@ -83,7 +49,7 @@ member_from_faces(const wc_cone_t W, const fmpq * g)
 
         for (i = 0; i < m && ok; i++)
         {
-            int contains = 1, s = dot_sgn_q(ROW(W->ineqs, i), g);
+            int contains = 1, s = wctest_dot3_sgn_z(ROW(W->ineqs, i), g);
 
             for (j = 0; j < F->nrays && contains; j++)
             {
@@ -266,8 +232,8 @@ check_mode(const wc_problem_t P, const char * mode, int members)
         wctest_fail_problem(P, mode, "direct route failed: %s", err->message);
     if (wc_wrench_cone_paper(B, NULL, P, mode, err) != WC_OK)
         wctest_fail_problem(P, mode, "paper route failed: %s", err->message);
-    ja = json_of(A);
-    jb = json_of(B);
+    ja = wctest_cone_json(A);
+    jb = wctest_cone_json(B);
     if (strcmp(ja, jb) != 0 || !wc_cone_equal(A, B))
         wctest_fail_problem(P, mode, "routes differ:\n direct %s\n paper  %s",
                             ja, jb);

@@ -127,6 +127,24 @@ verify(const char * text, size_t len)
     return st != WC_OK ? -1 : holds;
 }
 
+/* j's certificate (kind names it in messages), which must hold:
+   malloc'd, its length in *len.  */
+static char *
+holding_cert(const job * j, const char * kind, const char * what, slong it,
+             size_t * len)
+{
+    char * cert = print_to_string(put_cert, j, len);
+    int r;
+
+    if (cert == NULL)
+        wctest_fail("%s %ld: no %s", what, (long) it, kind);
+    r = verify(cert, *len);
+    if (r != 1)
+        wctest_fail("%s %ld: the %s %s:\n%s", what, (long) it, kind,
+                    r < 0 ? "is malformed" : "does not hold", cert);
+    return cert;
+}
+
 /* text with [at, at + cut) replaced by ins (malloc'd).  */
 static char *
 splice(const char * text, size_t len, size_t at, size_t cut,
@@ -152,7 +170,6 @@ check_problem(const wc_problem_t P, const char * what, slong it)
     char * cert, * strong, * weak, * t;
     size_t clen = 0, slen = 0, wlen = 0, tlen = 0;
     const char * at;
-    int r;
 
     wc_stability_init(S);
     wc_error_init(err);
@@ -162,13 +179,7 @@ check_problem(const wc_problem_t P, const char * what, slong it)
     j.S = S;
     j.R = NULL;
     j.C = NULL;
-    cert = print_to_string(put_cert, &j, &clen);
-    if (cert == NULL)
-        wctest_fail("%s %ld: no certificate", what, (long) it);
-    r = verify(cert, clen);
-    if (r != 1)
-        wctest_fail("%s %ld: the certificate %s:\n%s", what, (long) it,
-                    r < 0 ? "is malformed" : "does not hold", cert);
+    cert = holding_cert(&j, "certificate", what, it, &clen);
     strong = print_to_string(put_strong, S, &slen);
     at = strstr(cert, "\n \"strong\": ");
     if (at == NULL || strncmp(at + 12, strong, slen) != 0)
@@ -257,7 +268,6 @@ check_plan(const wc_problem_t P, const char * what, slong it)
     char * cert, * goal, * t;
     size_t clen = 0, glen = 0, tlen = 0;
     const char * at;
-    int r;
 
     wc_plan_init(R);
     wc_error_init(err);
@@ -267,13 +277,7 @@ check_plan(const wc_problem_t P, const char * what, slong it)
     j.S = NULL;
     j.R = R;
     j.C = NULL;
-    cert = print_to_string(put_cert, &j, &clen);
-    if (cert == NULL)
-        wctest_fail("%s %ld: no plan certificate", what, (long) it);
-    r = verify(cert, clen);
-    if (r != 1)
-        wctest_fail("%s %ld: the plan certificate %s:\n%s", what, (long) it,
-                    r < 0 ? "is malformed" : "does not hold", cert);
+    cert = holding_cert(&j, "plan certificate", what, it, &clen);
     goal = print_to_string(put_goal, R, &glen);
     at = strstr(cert, "\n \"goal\": ");
     if (at == NULL || strncmp(at + 10, goal, glen) != 0)

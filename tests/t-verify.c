@@ -16,7 +16,6 @@
    Silent on success; every failure is printed to stderr with the line of
    this file that found it, and the exit status is 1.  */
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -26,29 +25,8 @@
 #include "check/verify.h"
 #include "testutil.h"
 
-static int failures = 0;
-
+#define fail(line, ...) wctest_report("t-verify.c", line, __VA_ARGS__)
 #define FAIL(...) fail(__LINE__, __VA_ARGS__)
-
-static void
-fail(int line, const char * fmt, ...)
-#ifdef __GNUC__
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-
-static void
-fail(int line, const char * fmt, ...)
-{
-    va_list ap;
-
-    fprintf(stderr, "t-verify.c:%d: ", line);
-    va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
-    va_end(ap);
-    fputc('\n', stderr);
-    failures++;
-}
 
 static void *
 xmalloc(size_t n)
@@ -576,6 +554,26 @@ run_verify(int * holds, char ** reason, char ** mode, int * feasible,
     return status;
 }
 
+/* Whether a verifier's answer (status, holds, why; msg on error) is that
+   the text holds (reason NULL) or not for the reason given; if not, says
+   so for line.  */
+static int
+verdict_as(int line, int status, int holds, const char * why,
+           const char * msg, const char * reason)
+{
+    if (status != WC_OK)
+        fail(line, "status %d: %s", status, msg);
+    else if (reason == NULL && (holds != 1 || why != NULL))
+        fail(line, "does not hold: %s", why != NULL ? why : "(no reason)");
+    else if (reason != NULL && (holds != 0 || why == NULL
+                                || strcmp(why, reason) != 0))
+        fail(line, "holds %d, reason '%s', expected '%s'", holds,
+             why != NULL ? why : "(none)", reason);
+    else
+        return 1;
+    return 0;
+}
+
 /* text holds (or not: then reason must be as given), claiming mode and
    feasible.  */
 static void
@@ -586,15 +584,8 @@ verdict_is(int line, const char * text, const char * reason,
     char * why = NULL, * m = NULL, * msg = NULL;
 
     status = run_verify(&holds, &why, &m, &feas, text, strlen(text), &msg);
-    if (status != WC_OK)
-        fail(line, "status %d: %s", status, msg);
-    else if (reason == NULL && (holds != 1 || why != NULL))
-        fail(line, "does not hold: %s", why != NULL ? why : "(no reason)");
-    else if (reason != NULL && (holds != 0 || why == NULL
-                                || strcmp(why, reason) != 0))
-        fail(line, "holds %d, reason '%s', expected '%s'", holds,
-             why != NULL ? why : "(none)", reason);
-    else if (m == NULL || strcmp(m, mode) != 0 || feas != feasible)
+    if (verdict_as(line, status, holds, why, msg, reason)
+        && (m == NULL || strcmp(m, mode) != 0 || feas != feasible))
         fail(line, "claims mode %s, feasible %d", m != NULL ? m : "(none)",
              feas);
     free(why);
@@ -1046,37 +1037,43 @@ test_malformed(void)
 /* Every proper prefix of a certificate is malformed, and one-byte changes
    give a status of 0 or 1, never anything else, with the outputs set
    accordingly.  */
+/* Each certificate cut short (before its trailing newlines) is malformed,
+   with nothing else set; with one byte replaced by one of bytes it is
+   malformed with a located message, or well formed with a verdict and the
+   mode or summary.  A mode certificate (mode_cert) goes through
+   run_verify, any other through run_wc_verify, as in malformed_n.  */
 static void
-test_fuzz(void)
+fuzz_certs(const char * const * certs, size_t ncerts, const char * bytes,
+           size_t nbytes, int mode_cert)
 {
-    static const char * const certs[] = { cert_ln, cert_sss };
-    static const char bytes[] = { '\0', '"', '}', ']', '1', '-', '/', 'x',
-                                  ',', '\\', (char) 0xff, '0', 'a', 's' };
     size_t c, n, i, k;
 
-    for (c = 0; c < 2; c++)
+    for (c = 0; c < ncerts; c++)
     {
         const char * cert = certs[c];
         char * t;
+        size_t end;
 
         n = strlen(cert);
-        while (n > 0 && (cert[n - 1] == '\n' || cert[n - 1] == '}'))
-            n--;
-        for (i = 0; i <= n; i++)
+        for (end = n; end > 0 && cert[end - 1] == '\n'; end--)
+            ;
+        t = xmalloc(n + 1);
+        for (i = 0; i < end; i++)
         {
             int holds, feas, status;
             char * why, * m, * msg;
 
-            status = run_verify(&holds, &why, &m, &feas, cert, i, &msg);
-            if (status != WC_EINPUT || msg == NULL)
+            status = mode_cert
+                ? run_verify(&holds, &why, &m, &feas, cert, i, &msg)
+                : run_wc_verify(&holds, &why, &m, cert, i, &msg);
+            if (status != WC_EINPUT || msg == NULL || why != NULL
+                || m != NULL)
                 FAIL("prefix of %lu bytes: status %d", (unsigned long) i,
                      status);
             free(msg);
         }
-        n = strlen(cert);
-        t = xmalloc(n + 1);
         for (i = 0; i < n; i++)
-            for (k = 0; k < sizeof bytes; k++)
+            for (k = 0; k < nbytes; k++)
             {
                 int holds, feas, status;
                 char * why, * m, * msg;
@@ -1085,12 +1082,15 @@ test_fuzz(void)
                 if (t[i] == bytes[k])
                     continue;
                 t[i] = bytes[k];
-                status = run_verify(&holds, &why, &m, &feas, t, n, &msg);
+                status = mode_cert
+                    ? run_verify(&holds, &why, &m, &feas, t, n, &msg)
+                    : run_wc_verify(&holds, &why, &m, t, n, &msg);
                 if (status == WC_OK)
                 {
                     if ((holds != 0 && holds != 1) || m == NULL
                         || (holds == 0) != (why != NULL) || msg != NULL)
-                        FAIL("mutation at %lu: bad outputs", (unsigned long) i);
+                        FAIL("mutation at %lu: bad outputs",
+                             (unsigned long) i);
                     free(why);
                     free(m);
                 }
@@ -1102,6 +1102,16 @@ test_fuzz(void)
             }
         free(t);
     }
+}
+
+static void
+test_fuzz(void)
+{
+    static const char * const certs[] = { cert_ln, cert_sss };
+    static const char bytes[] = { '\0', '"', '}', ']', '1', '-', '/', 'x',
+                                  ',', '\\', (char) 0xff, '0', 'a', 's' };
+
+    fuzz_certs(certs, 2, bytes, sizeof bytes, 1);
 }
 
 /* ------------------------------------------------------------------ */
@@ -1223,15 +1233,8 @@ stab_verdict_is(int line, const char * text, const char * reason,
     char * why = NULL, * sum = NULL, * msg = NULL;
 
     status = run_wc_verify(&holds, &why, &sum, text, strlen(text), &msg);
-    if (status != WC_OK)
-        fail(line, "status %d: %s", status, msg);
-    else if (reason == NULL && (holds != 1 || why != NULL))
-        fail(line, "does not hold: %s", why != NULL ? why : "(no reason)");
-    else if (reason != NULL && (holds != 0 || why == NULL
-                                || strcmp(why, reason) != 0))
-        fail(line, "holds %d, reason '%s', expected '%s'", holds,
-             why != NULL ? why : "(none)", reason);
-    else if (sum == NULL || strcmp(sum, summary) != 0)
+    if (verdict_as(line, status, holds, why, msg, reason)
+        && (sum == NULL || strcmp(sum, summary) != 0))
         fail(line, "summary '%s', expected '%s'", sum != NULL ? sum
              : "(none)", summary);
     free(why);
@@ -1652,55 +1655,9 @@ test_stability_fuzz(void)
                                           stab_separator };
     static const char bytes[] = { '\0', '"', '}', ']', '1', '-', '/', 'x',
                                   ',', '0', 'u', 'n', 's', 'l', 'r', '9' };
-    size_t c, n, i, k;
 
-    for (c = 0; c < sizeof certs / sizeof certs[0]; c++)
-    {
-        const char * cert = certs[c];
-        char * t;
-
-        n = strlen(cert);
-        for (i = 0; i < n; i++)
-        {
-            int holds, status;
-            char * why, * sum, * msg;
-
-            status = run_wc_verify(&holds, &why, &sum, cert, i, &msg);
-            if (status != WC_EINPUT || msg == NULL || why != NULL
-                || sum != NULL)
-                FAIL("prefix of %lu bytes: status %d", (unsigned long) i,
-                     status);
-            free(msg);
-        }
-        t = xmalloc(n + 1);
-        for (i = 0; i < n; i++)
-            for (k = 0; k < sizeof bytes; k++)
-            {
-                int holds, status;
-                char * why, * sum, * msg;
-
-                memcpy(t, cert, n + 1);
-                if (t[i] == bytes[k])
-                    continue;
-                t[i] = bytes[k];
-                status = run_wc_verify(&holds, &why, &sum, t, n, &msg);
-                if (status == WC_OK)
-                {
-                    if ((holds != 0 && holds != 1) || sum == NULL
-                        || (holds == 0) != (why != NULL) || msg != NULL)
-                        FAIL("mutation at %lu: bad outputs",
-                             (unsigned long) i);
-                    free(why);
-                    free(sum);
-                }
-                else if (status != WC_EINPUT || msg == NULL
-                         || strncmp(msg, "c:", 2) != 0)
-                    FAIL("mutation at %lu: status %d (%s)", (unsigned long) i,
-                         status, msg != NULL ? msg : "");
-                free(msg);
-            }
-        free(t);
-    }
+    fuzz_certs(certs, sizeof certs / sizeof certs[0], bytes, sizeof bytes,
+               0);
 }
 
 /* The strong-stability certificates in tests/certs (top_srcdir from the
@@ -1952,6 +1909,25 @@ faces_certificate(const wc_problem_t P, char ** signs, slong count,
     return b.s;
 }
 
+/* wc_verify on text, which is freed: sets *refused when text is well
+   formed and does not hold, and returns the reason, or else the message
+   (malloc'd; NULL when it holds).  */
+static char *
+refusal(char * text, int * refused)
+{
+    int holds, status;
+    char * why, * sum, * msg;
+
+    status = run_wc_verify(&holds, &why, &sum, text, strlen(text), &msg);
+    free(text);
+    free(sum);
+    *refused = status == WC_OK && holds == 0;
+    if (why == NULL)
+        return msg;
+    free(msg);
+    return why;
+}
+
 /* The moving faces verify computes from the arrangement are the Table 1
    modes that wc_modes_enumerate finds feasible for the touching fixels
    alone (the velocity table is the same arrangement), but n..n, with u
@@ -1972,7 +1948,7 @@ test_faces_cross(void)
         wc_error_t e;
         char ** signs, * text, * why, * sum, * msg, expect[400];
         slong i, j, k, count = 0, t = 0;
-        int holds, status, shared = 1;
+        int holds, status, refused, shared = 1;
 
         if (!wctest_iter(it))
             continue;
@@ -2069,17 +2045,12 @@ test_faces_cross(void)
             signs[k] = signs[count - 1];
             text = faces_certificate(P, signs, count - 1, shared);
             signs[k] = gone;
-            status = run_wc_verify(&holds, &why, &sum, text, strlen(text),
-                                   &msg);
+            why = refusal(text, &refused);
             snprintf(expect, sizeof expect, "the faces omit the moving face "
                      "%.200s", gone);
-            if (status != WC_OK || holds != 0 || strcmp(why, expect) != 0)
-                wctest_fail_problem(P, NULL, "dropped %s: %s", gone,
-                                    why != NULL ? why : msg);
-            free(text);
+            if (!refused || strcmp(why, expect) != 0)
+                wctest_fail_problem(P, NULL, "dropped %s: %s", gone, why);
             free(why);
-            free(sum);
-            free(msg);
         }
 
         /* one too many: a string of s l r n (u on near fixels) that
@@ -2104,19 +2075,14 @@ test_faces_cross(void)
             if (tries < 1000)
             {
                 signs[count] = extra;
-                text = faces_certificate(P, signs, count + 1, shared);
-                status = run_wc_verify(&holds, &why, &sum, text,
-                                       strlen(text), &msg);
+                why = refusal(faces_certificate(P, signs, count + 1, shared),
+                              &refused);
                 snprintf(expect, sizeof expect, "face %ld (%.200s) is not a "
                          "moving face of the problem", (long) count + 1,
                          extra);
-                if (status != WC_OK || holds != 0 || strcmp(why, expect) != 0)
-                    wctest_fail_problem(P, NULL, "added %s: %s", extra,
-                                        why != NULL ? why : msg);
-                free(text);
+                if (!refused || strcmp(why, expect) != 0)
+                    wctest_fail_problem(P, NULL, "added %s: %s", extra, why);
                 free(why);
-                free(sum);
-                free(msg);
             }
             free(extra);
         }
@@ -2130,22 +2096,29 @@ test_faces_cross(void)
     }
 }
 
-/* The certificate wc_classify_certificate_fprint writes for R, malloc'd,
-   via a temporary file.  */
-static char *
-classify_text(const wc_problem_t P, const wc_classify_t R)
+/* A temporary file to write a certificate to.  */
+static FILE *
+cert_file(void)
 {
     FILE * f = tmpfile();
-    long n;
-    char * s;
 
     if (f == NULL)
     {
         perror("t-verify: tmpfile");
         exit(99);
     }
-    if (wc_classify_certificate_fprint(f, P, R) != WC_OK || fflush(f) != 0
-        || (n = ftell(f)) < 0)
+    return f;
+}
+
+/* What f, from cert_file, holds, malloc'd, its length in *len (when len
+   is not NULL); status is the writer's.  Closes f.  */
+static char *
+cert_read_back(FILE * f, int status, size_t * len)
+{
+    long n;
+    char * s;
+
+    if (status != WC_OK || fflush(f) != 0 || (n = ftell(f)) < 0)
         wctest_fail("cannot write a certificate");
     rewind(f);
     s = xmalloc((size_t) n + 1);
@@ -2153,7 +2126,19 @@ classify_text(const wc_problem_t P, const wc_classify_t R)
         wctest_fail("cannot read a certificate back");
     s[n] = '\0';
     fclose(f);
+    if (len != NULL)
+        *len = (size_t) n;
     return s;
+}
+
+/* The certificate wc_classify_certificate_fprint writes for R, malloc'd,
+   via a temporary file.  */
+static char *
+classify_text(const wc_problem_t P, const wc_classify_t R)
+{
+    FILE * f = cert_file();
+
+    return cert_read_back(f, wc_classify_certificate_fprint(f, P, R), NULL);
 }
 
 /* Certificates written by wc_classify (FLINT, cddlib, exact LPs) hold
@@ -2175,7 +2160,7 @@ test_classify_cross(void)
         fmpq_t c, d, x;
         char * text, * why, * sum, * msg, expect[400];
         slong i, j;
-        int holds, status;
+        int holds, status, refused;
 
         if (!wctest_iter(it))
             continue;
@@ -2283,18 +2268,13 @@ test_classify_cross(void)
             text = classify_text(P, R);
             for (j = 0; j < F->nmult; j++)
                 fmpq_neg(F->mult + j, F->mult + j);
-            status = run_wc_verify(&holds, &why, &sum, text, strlen(text),
-                                   &msg);
+            why = refusal(text, &refused);
             snprintf(expect, sizeof expect, "face %ld (", (long) k + 1);
-            if (status != WC_OK || holds != 0
-                || strncmp(why, expect, strlen(expect)) != 0
+            if (!refused || strncmp(why, expect, strlen(expect)) != 0
                 || strstr(why, ": multiplier ") == NULL)
                 wctest_fail_problem(P, NULL, "face %ld negated: %s", (long) k
-                                    + 1, why != NULL ? why : msg);
-            free(text);
+                                    + 1, why);
             free(why);
-            free(sum);
-            free(msg);
 
             /* one face left out */
             swap = *F;
@@ -2305,21 +2285,17 @@ test_classify_cross(void)
             R->nnofaces++;
             R->nofaces[R->nnofaces - 1] = *F;
             *F = swap;
-            status = run_wc_verify(&holds, &why, &sum, text, strlen(text),
-                                   &msg);
+            why = refusal(text, &refused);
             if (F->rotation != 0)
                 snprintf(expect, sizeof expect, "the faces omit the moving "
                          "face %.200s, rotation %d", F->sign, F->rotation);
             else
                 snprintf(expect, sizeof expect, "the faces omit the moving "
                          "face %.200s", F->sign);
-            if (status != WC_OK || holds != 0 || strcmp(why, expect) != 0)
+            if (!refused || strcmp(why, expect) != 0)
                 wctest_fail_problem(P, NULL, "face %ld left out: %s", (long) k
-                                    + 1, why != NULL ? why : msg);
-            free(text);
+                                    + 1, why);
             free(why);
-            free(sum);
-            free(msg);
         }
         for (j = 0; j < 3; j++)
             fmpq_clear(g + j);
@@ -2339,26 +2315,9 @@ test_classify_cross(void)
 static char *
 certificate_text(size_t * len, const wc_certificate_t C, const wc_problem_t P)
 {
-    FILE * f = tmpfile();
-    long n;
-    char * s;
+    FILE * f = cert_file();
 
-    if (f == NULL)
-    {
-        perror("t-verify: tmpfile");
-        exit(99);
-    }
-    if (wc_certificate_fprint(f, C, P, 1) != WC_OK || fflush(f) != 0
-        || (n = ftell(f)) < 0)
-        wctest_fail("cannot write a certificate");
-    rewind(f);
-    s = xmalloc((size_t) n + 1);
-    if (fread(s, 1, (size_t) n, f) != (size_t) n)
-        wctest_fail("cannot read a certificate back");
-    s[n] = '\0';
-    fclose(f);
-    *len = (size_t) n;
-    return s;
+    return cert_read_back(f, wc_certificate_fprint(f, C, P, 1), len);
 }
 
 static void
@@ -2453,10 +2412,10 @@ main(void)
     test_faces_cross();
     test_classify_cross();
     flint_cleanup_master();
-    if (failures > 0)
+    if (wctest_failures() > 0)
     {
-        fprintf(stderr, "t-verify: %d failure(s) (seed %llu)\n", failures,
-                (unsigned long long) wctest_seed());
+        fprintf(stderr, "t-verify: %d failure(s) (seed %llu)\n",
+                wctest_failures(), (unsigned long long) wctest_seed());
         return 1;
     }
     return 0;

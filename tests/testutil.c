@@ -7,6 +7,8 @@
    The generator is splitmix64 (Steele, Lea and Flood, 2014): one 64-bit
    word of state, so an iteration is replayed by setting that word alone.  */
 
+#include <config.h>
+
 #include <errno.h>
 #include <inttypes.h>
 #include <stdarg.h>
@@ -15,6 +17,7 @@
 #include <string.h>
 
 #include "core/problem.h"
+#include "io/print.h"
 #include "testutil.h"
 
 #define WCTEST_DEFAULT_SEED UINT64_C(20021212)
@@ -209,6 +212,27 @@ fail_footer(void)
         fprintf(stderr, "replay with: WC_TEST_SEED=%" PRIu64 "\n",
                 test_seed);
     fflush(stderr);
+}
+
+static int report_count = 0;
+
+void
+wctest_report(const char * file, int line, const char * fmt, ...)
+{
+    va_list ap;
+
+    fprintf(stderr, "%s:%d: ", file, line);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+    report_count++;
+}
+
+int
+wctest_failures(void)
+{
+    return report_count;
 }
 
 void
@@ -465,10 +489,8 @@ scaled_copy(fmpq * d, const fmpq * v, slong neg, slong den)
     fmpq_clear(s);
 }
 
-/* 1 when fixels a and b are at the same point with normals pointing the
-   same way: an invalid problem (wrenchcone(5)).  */
-static int
-same_contact(const wc_fixel_struct * a, const wc_fixel_struct * b)
+int
+wctest_same_contact(const wc_fixel_struct * a, const wc_fixel_struct * b)
 {
     fmpq_t x, y;
     int same;
@@ -708,7 +730,7 @@ wctest_random_problem(wc_problem_t P, slong nmin, slong nmax)
     /* Never two fixels at one point with the same normal direction.  */
     for (i = 1; i < n; i++)
         for (j = 0; j < i; j++)
-            if (same_contact(P->fixels + i, P->fixels + j))
+            if (wctest_same_contact(P->fixels + i, P->fixels + j))
             {
                 rand_normal(P->fixels[i].normal);
                 j = -1;         /* recheck against all */
@@ -769,6 +791,57 @@ wctest_load_data(wc_problem_t P, const char * name)
     free(text);
 }
 
+char *
+wctest_cone_json(const wc_cone_t W)
+{
+    char * buf = NULL;
+    size_t len = 0;
+    FILE * f = open_memstream(&buf, &len);
+    int status;
+
+    if (f == NULL)
+        wctest_fail("open_memstream failed");
+    status = wc_cone_fprint_json(f, W);
+    if (fclose(f) != 0 || status != WC_OK)
+        wctest_fail("wc_cone_fprint_json failed");
+    return buf;
+}
+
+wc_fixel_struct *
+wctest_fixel_si(wc_problem_t P, slong px, slong py, slong nx, slong ny,
+                wc_fixel_state state)
+{
+    wc_fixel_struct * f = wc_problem_add_fixel(P);
+
+    fmpq_set_si(f->point + 0, px, 1);
+    fmpq_set_si(f->point + 1, py, 1);
+    fmpq_set_si(f->normal + 0, nx, 1);
+    fmpq_set_si(f->normal + 1, ny, 1);
+    f->state = state;
+    return f;
+}
+
+void
+wctest_wrench_of(fmpq * w, const wc_problem_t P, const wc_fixel_struct * f,
+                 const fmpq * d)
+{
+    fmpq_t rx, ry, t;
+
+    fmpq_init(rx);
+    fmpq_init(ry);
+    fmpq_init(t);
+    fmpq_sub(rx, f->point + 0, P->com + 0);
+    fmpq_sub(ry, f->point + 1, P->com + 1);
+    fmpq_set(w + 0, d + 0);
+    fmpq_set(w + 1, d + 1);
+    fmpq_mul(w + 2, rx, d + 1);
+    fmpq_mul(t, ry, d + 0);
+    fmpq_sub(w + 2, w + 2, t);
+    fmpq_clear(rx);
+    fmpq_clear(ry);
+    fmpq_clear(t);
+}
+
 void
 wctest_vec3_si(fmpq * g, slong x, slong y, slong t)
 {
@@ -797,4 +870,24 @@ wctest_dot3(fmpq_t r, const fmpq * a, const fmpq * b)
         fmpq_add(r, r, t);
     }
     fmpq_clear(t);
+}
+
+int
+wctest_dot3_sgn_z(const fmpz * h, const fmpq * g)
+{
+    fmpq_t s, t;
+    slong j;
+    int r;
+
+    fmpq_init(s);
+    fmpq_init(t);
+    for (j = 0; j < 3; j++)
+    {
+        fmpq_mul_fmpz(t, g + j, h + j);
+        fmpq_add(s, s, t);
+    }
+    r = fmpq_sgn(s);
+    fmpq_clear(s);
+    fmpq_clear(t);
+    return r;
 }

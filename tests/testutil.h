@@ -23,6 +23,7 @@
 #include <flint/fmpq.h>
 
 #include "core/problem.h"
+#include "exact/cone.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -79,6 +80,12 @@ _Noreturn void wctest_fail_problem(const wc_problem_t P, const char * mode,
                                    const char * fmt, ...)
     WCTEST_PRINTF(3, 4);
 
+/* For tests that go on after a failure: write "FILE:LINE: message" on
+   stderr and count it.  wctest_failures says how many so far.  */
+void wctest_report(const char * file, int line, const char * fmt, ...)
+    WCTEST_PRINTF(3, 4);
+int wctest_failures(void);
+
 /* "(1, -2/3, 0)": a malloc'd string for messages; free with flint_free.  */
 char * wctest_vec_str(const fmpq * v, slong len);
 
@@ -104,6 +111,24 @@ void wctest_random_mode_kinematic(char * mode, const wc_problem_t P);
    be read or parsed.  */
 void wctest_load_data(wc_problem_t P, const char * name);
 
+/* W as wc_cone_fprint_json writes it: a string to free with free();
+   fails the test when it cannot be written.  */
+char * wctest_cone_json(const wc_cone_t W);
+
+/* Add to P a fixel at (px, py) with normal (nx, ny), in the given state
+   (friction as wc_problem_add_fixel sets it); returns it.  */
+wc_fixel_struct * wctest_fixel_si(wc_problem_t P, slong px, slong py,
+                                  slong nx, slong ny, wc_fixel_state state);
+
+/* 1 when fixels a and b are at the same point with normals pointing the
+   same way: an invalid problem (wrenchcone(5)).  */
+int wctest_same_contact(const wc_fixel_struct * a, const wc_fixel_struct * b);
+
+/* w = (d_x, d_y, (p - com) x d): the wrench of a unit force along d at
+   fixel f of P (a column of J).  d may alias w.  */
+void wctest_wrench_of(fmpq * w, const wc_problem_t P,
+                      const wc_fixel_struct * f, const fmpq * d);
+
 /* g = (x, y, t).  */
 void wctest_vec3_si(fmpq * g, slong x, slong y, slong t);
 
@@ -112,6 +137,9 @@ int wctest_vec3_is_zero(const fmpq * v);
 
 /* r = a . b, over three entries; r may not alias a or b.  */
 void wctest_dot3(fmpq_t r, const fmpq * a, const fmpq * b);
+
+/* The sign of h . g, over three entries, h integer.  */
+int wctest_dot3_sgn_z(const fmpz * h, const fmpq * g);
 
 #ifdef __cplusplus
 }
