@@ -22,7 +22,16 @@
    along one direction: none (P = { 0 }), one point (v1 = v2: a ray), or
    two; then the optimum of n = v1 x v2 and of -n, which vanishes on the
    chord, says whether P leaves the chord (interior: v1 + v2 + v3 is an
-   interior point) or is the chord (a wedge).  */
+   interior point) or is the chord (a wedge).
+
+   Every answer is checked before it is given.  P = { 0 } comes with at
+   most eight rows whose positive hull is already R^3: a, b, c; the two
+   rows that fix the optimum v before the row g that empties the chart;
+   g; and the one or two rows that leave g's line empty (if a point x of
+   the polygon of these rows had g . x >= 0, the segment from v to x
+   would cross g's line inside it).  pos(S) = R^3 is then checked on its
+   own: S spans R^3 and no h = s x s' (s, s' in S) nor -h is <= 0 on all
+   of S, for an extreme ray of the polar of S would be one of them.  */
 
 #include <config.h>
 
@@ -43,6 +52,9 @@ typedef struct
     fmpz * o;           /* a point (ray) of the line */
     fmpz * w, * lo, * hi;
     fmpz_t s, x, y;
+    slong ilo, ihi;     /* the positions of the rows giving lo and hi */
+    slong bas[2];       /* the rows besides a, b, c that fix v (-1: none) */
+    slong wit[3];       /* the rows that emptied the chart (-1: none) */
 }
 lp_ctx;
 
@@ -73,17 +85,20 @@ better(lp_ctx * c, const fmpz * e1, const fmpz * e2, const fmpz * u,
 }
 
 /* v := the optimum of the region of rows ord[0..n) on the line
-   g . d = 0 of the chart.  Returns 1, 0 when that is empty, -1 when the
-   line is not bounded there (impossible: a, b, c bound it).  On the line,
-   d = o + s t (p . t = 0, so p . d = p . o), and row h bounds s from
-   below (h . t > 0) or above (h . t < 0) at the ray g x h.  */
+   g . d = 0 of the chart, g = ROW(c, n).  Returns 1 (c->bas := the rows
+   fixing v), 0 when that is empty (c->wit := the rows that say so), -1
+   when the line is not bounded there (impossible: a, b, c bound it).  On
+   the line, d = o + s t (p . t = 0, so p . d = p . o), and row h bounds s
+   from below (h . t > 0) or above (h . t < 0) at the ray g x h.  */
 static int
-on_line(lp_ctx * c, fmpz * v, const fmpz * g, slong n, const fmpz * e1,
-        const fmpz * e2)
+on_line(lp_ctx * c, fmpz * v, slong n, const fmpz * e1, const fmpz * e2)
 {
+    const fmpz * g = ROW(c, n);
     slong i;
     int have_lo = 0, have_hi = 0, s;
 
+    c->wit[0] = n;
+    c->wit[1] = c->wit[2] = -1;
     _wc_zvec3_cross(c->t, g, c->p);
     if (_fmpz_vec_is_zero(c->t, 3))
         return 0;               /* g = -p up to scale: nothing is left */
@@ -96,7 +111,10 @@ on_line(lp_ctx * c, fmpz * v, const fmpz * g, slong n, const fmpz * e1,
         if (s == 0)
         {
             if (_wc_zvec3_dot_sgn_fast(h, c->o, c->s) < 0)
+            {
+                c->wit[1] = i;
                 return 0;
+            }
             continue;
         }
         _wc_zvec3_cross(c->w, g, h);
@@ -105,22 +123,30 @@ on_line(lp_ctx * c, fmpz * v, const fmpz * g, slong n, const fmpz * e1,
         if (s > 0 && (!have_lo || ratio_cmp(c, c->t, c->w, c->lo) > 0))
         {
             _fmpz_vec_swap(c->lo, c->w, 3);
+            c->ilo = i;
             have_lo = 1;
         }
         else if (s < 0 && (!have_hi || ratio_cmp(c, c->t, c->w, c->hi) < 0))
         {
             _fmpz_vec_swap(c->hi, c->w, 3);
+            c->ihi = i;
             have_hi = 1;
         }
     }
     if (!have_lo || !have_hi)
         return -1;
     if (ratio_cmp(c, c->t, c->lo, c->hi) > 0)
+    {
+        c->wit[1] = c->ilo;
+        c->wit[2] = c->ihi;
         return 0;
+    }
     s = _wc_zvec3_dot_sgn_fast(e1, c->t, c->s);
     if (s == 0)
         s = _wc_zvec3_dot_sgn_fast(e2, c->t, c->s);
     _fmpz_vec_set(v, s > 0 ? c->hi : c->lo, 3);
+    c->bas[0] = n;
+    c->bas[1] = s > 0 ? c->ihi : c->ilo;
     return 1;
 }
 
@@ -132,6 +158,7 @@ solve(lp_ctx * c, fmpz * v, const fmpz * e1, const fmpz * e2)
     slong i;
     int r;
 
+    c->bas[0] = c->bas[1] = -1;
     for (i = 0; i < 3; i++)
     {
         _wc_zvec3_cross(c->w, ROW(c, (i + 1) % 3), ROW(c, (i + 2) % 3));
@@ -144,7 +171,7 @@ solve(lp_ctx * c, fmpz * v, const fmpz * e1, const fmpz * e2)
 
         if (_wc_zvec3_dot_sgn_fast(v, g, c->s) >= 0)
             continue;
-        if ((r = on_line(c, v, g, i, e1, e2)) != 1)
+        if ((r = on_line(c, v, i, e1, e2)) != 1)
             return r;
     }
     return 1;
@@ -310,6 +337,52 @@ chord(lp_ctx * c, fmpz * V, const fmpz * v1, const fmpz * v2, fmpz * e)
         && face_held(c, v2, v1, e) ? WC_POLAR3_WEDGE : WC_POLAR3_FAILED;
 }
 
+/* 1 when pos(S) = R^3 for the rows S at positions P[0..m) (see the top).
+   e: 3 entries of scratch.  */
+static int
+space_held(lp_ctx * c, const slong * P, int m, fmpz * e)
+{
+    int i, j, l, rank3 = 0, pos, neg;
+
+    for (i = 0; i < m; i++)
+        for (j = i + 1; j < m; j++)
+        {
+            _wc_zvec3_cross(e, ROW(c, P[i]), ROW(c, P[j]));
+            if (_fmpz_vec_is_zero(e, 3))
+                continue;
+            for (l = pos = neg = 0; l < m; l++)
+            {
+                int s = _wc_zvec3_dot_sgn_fast(e, ROW(c, P[l]), c->s);
+
+                pos |= s > 0;
+                neg |= s < 0;
+            }
+            if (!pos || !neg)
+                return 0;       /* e or -e is in the polar of S */
+            rank3 = 1;          /* a row off the plane of P[i], P[j] */
+        }
+    return rank3;
+}
+
+/* The certificate of P = { 0 } after the first program found the chart
+   empty: a, b, c, c->bas and c->wit.  */
+static int
+space_certified(lp_ctx * c, fmpz * e)
+{
+    slong P[8];
+    int i, m = 0;
+
+    for (i = 0; i < 3; i++)
+        P[m++] = i;
+    for (i = 0; i < 2; i++)
+        if (c->bas[i] >= 0)
+            P[m++] = c->bas[i];
+    for (i = 0; i < 3; i++)
+        if (c->wit[i] >= 0)
+            P[m++] = c->wit[i];
+    return space_held(c, P, m, e);
+}
+
 static void
 primitive(fmpz * v, fmpz_t t)
 {
@@ -361,7 +434,7 @@ _wc_polar3(fmpz * V, const fmpz * G, slong k)
     r = solve(&c, v1, e1, e2);
     if (r == 0)
     {
-        r = WC_POLAR3_SPACE;
+        r = space_certified(&c, e + 12) ? WC_POLAR3_SPACE : WC_POLAR3_FAILED;
         goto cleanup;
     }
     _fmpz_vec_neg(e1, e1, 3);

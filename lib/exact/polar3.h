@@ -15,7 +15,8 @@
    interior point, checked before it answers: an interior point d by
    d . g > 0 for every g; a ray or a wedge by the rows on each facet,
    which must span it as a cone (then pos(G) holds the whole cone the
-   facets bound).  R^3 is the programs' infeasibility, not re-checked.  */
+   facets bound); R^3 by at most eight rows whose positive hull is
+   already R^3, which no extreme ray of their polar leaves room for.  */
 
 #ifndef WC_EXACT_POLAR3_H
 #define WC_EXACT_POLAR3_H
