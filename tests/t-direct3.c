@@ -173,6 +173,54 @@ line_problem(wc_problem_t P, slong n)
     }
 }
 
+/* One sliding fixel whose friction edge lies in the plane M V_x: with
+   n = (0, 1), r = p - com = (1, y), I = m and mu_k = 1/2, the edge's
+   component across that plane is a multiple of 2 +- y / 2, zero for
+   y = -+4.  Both slide directions and both signs of y, so that the edge
+   lies in the plane on either side of the open half-plane, and off it;
+   other fixels unconstrained (u) or none.  */
+static void
+check_in_plane(void)
+{
+    slong y, k, extra;
+    char mode[4];
+
+    for (y = -4; y <= 4; y += 8)
+        for (k = 0; k < 2; k++)
+            for (extra = 0; extra < 2; extra++)
+            {
+                wc_problem_t P;
+                wc_fixel_struct * f;
+
+                wc_problem_init(P);
+                fmpq_set_si(P->mu_s, 1, 2);
+                fmpq_set_si(P->mu_k, 1, 2);
+                fmpq_set_si(P->mass, 3, 1);
+                fmpq_set_si(P->inertia, 3, 1);
+                fmpq_set_si(P->com + 0, 1, 3);
+                fmpq_set_si(P->com + 1, -2, 5);
+                f = wc_problem_add_fixel(P);
+                fmpq_set_si(f->point + 0, 4, 3);
+                fmpq_set_si(f->point + 1, 5 * y - 2, 5);
+                fmpq_set_si(f->normal + 1, 1, 1);
+                f->state = WC_TOUCHING;
+                mode[0] = "lr"[k];
+                mode[1] = '\0';
+                if (extra)
+                {
+                    f = wc_problem_add_fixel(P);
+                    fmpq_set_si(f->point + 0, 1, 1);
+                    fmpq_set_si(f->normal + 0, 1, 1);
+                    f->state = WC_NEAR;
+                    mode[1] = 'u';
+                    mode[2] = '\0';
+                }
+                if (!check(P, mode))
+                    wctest_fail_problem(P, mode, "the fast path gave up");
+                wc_problem_clear(P);
+            }
+}
+
 /* x := x (2^e + a) / (2^e + b) for a, b in [1, 9]: the same sign, and
    numerators and denominators about 2^e.  */
 static void
@@ -288,6 +336,7 @@ main(void)
     char mode[64];
 
     wctest_init("t-direct3");
+    check_in_plane();
     iters = wctest_iters(1500);
     for (i = 0; i < iters; i++)
     {

@@ -38,7 +38,7 @@
 #include "analysis/direct3.h"
 
 /* What V_x is.  */
-enum { V_EMPTY, V_ORIGIN, V_RAY, V_LINE, V_POLAR, V_OTHER };
+enum { V_EMPTY, V_ORIGIN, V_RAY, V_LINE, V_POLAR, V_PLANE, V_OTHER };
 
 typedef struct
 {
@@ -572,6 +572,9 @@ settle_v(ws_struct * w, _wc_fan3_t FV, fmpz * u, int * apex)
         return w->ns == 0 ? V_ORIGIN : V_EMPTY;
     if (r == 2)
         return on_line(w, u, apex);
+    if (r == 1 && w->nh == 0 && w->nq > 0
+        && (w->ns == 0 || (w->ns == 1 && w->nq == 1)))
+        return V_PLANE;
     if (r == 1 || w->ns > 0 || w->nh == 0)
         return V_OTHER;
     _fmpz_vec_zero(u, 3);
@@ -586,10 +589,176 @@ settle_v(ws_struct * w, _wc_fan3_t FV, fmpz * u, int * apex)
         : r == WC_FAN3_SPACE ? V_ORIGIN : V_OTHER;
 }
 
-/* W := the fan of the generators; *done := 0 when the fan does not
-   settle it.  Returns WC_OK, or WC_EINTERNAL when out of memory.  */
+/* W := { g : e . g = 0, h . g <= 0, s . g < 0 } for the rows e, h, s
+   (3 entries each, or NULL), by the general conversion.  */
 static int
-set_w(wc_cone_t W, int * done, ws_struct * w, int kind, int apex)
+set_rows(wc_cone_t W, const fmpz * e, const fmpz * h, const fmpz * s,
+         wc_error_t err)
+{
+    const fmpz * x[3] = { e, h, s };
+    fmpq_mat_t A[3];
+    slong i, j;
+    int status;
+
+    for (i = 0; i < 3; i++)
+    {
+        fmpq_mat_init(A[i], x[i] != NULL, 3);
+        for (j = 0; x[i] != NULL && j < 3; j++)
+            fmpz_set(fmpq_mat_entry_num(A[i], 0, j), x[i] + j);
+    }
+    status = wc_cone_set_hrep(W, A[0], A[1], A[2], err);
+    for (i = 0; i < 3; i++)
+        fmpq_mat_clear(A[i]);
+    return status;
+}
+
+/* V_x = the plane a . nudot = 0 (a the equality row), or with one strict
+   row b the open half-plane b . nudot < 0 in it; M V_x = { g : a' . g =
+   0 (, b' . g < 0) } for a', b' the rows times M^-1.  W = M V_x + pos(Q):
+   a plane plus edges is the plane, a closed half-space or R^3 by the
+   signs of a' . q; an open half-plane plus one edge q is, when a' . q =
+   0, itself (b' . q <= 0) or the plane, else (t = a' . g / a' . q >= 0
+   and b' . (g - t q) < 0) { g : -s a' . g <= 0, s c . g < 0 } with
+   s = sign(a' . q), c = (a' . q) b' - (b' . q) a'.  */
+static int
+plane_sum(wc_cone_t W, ws_struct * w, wc_error_t err)
+{
+    fmpz * a = w->G, * b = w->G + 3, * c = w->G + 6, * t = SCRATCH(w);
+    fmpz_t aq, bq;
+    slong i;
+    int pos = 0, neg = 0, sg, status;
+
+    for (i = 0; _fmpz_vec_is_zero(w->E + 3 * i, 3); i++)
+        ;
+    fmpz_mul(a + 0, w->mb, w->E + 3 * i);
+    fmpz_mul(a + 1, w->mb, w->E + 3 * i + 1);
+    fmpz_mul(a + 2, w->ma, w->E + 3 * i + 2);
+    if (w->ns == 0)
+    {
+        for (i = 0; i < w->nq; i++)
+        {
+            sg = _wc_zvec3_dot_sgn_fast(a, w->Q + 3 * i, t);
+            pos |= sg > 0;
+            neg |= sg < 0;
+        }
+        if (pos && neg)
+        {
+            _wc_cone3_set_space(W);
+            return WC_OK;
+        }
+        if (pos)
+            _fmpz_vec_neg(a, a, 3);
+        return set_rows(W, pos || neg ? NULL : a, pos || neg ? a : NULL,
+                        NULL, err);
+    }
+    fmpz_init(aq);
+    fmpz_init(bq);
+    fmpz_mul(b + 0, w->mb, w->S + 0);
+    fmpz_mul(b + 1, w->mb, w->S + 1);
+    fmpz_mul(b + 2, w->ma, w->S + 2);
+    _fmpz_vec_dot(aq, a, w->Q, 3);
+    _fmpz_vec_dot(bq, b, w->Q, 3);
+    if (fmpz_is_zero(aq))
+        status = set_rows(W, a, NULL, fmpz_sgn(bq) <= 0 ? b : NULL, err);
+    else
+    {
+        _fmpz_vec_scalar_mul_fmpz(c, b, 3, aq);
+        _fmpz_vec_scalar_submul_fmpz(c, a, 3, bq);
+        if (fmpz_sgn(aq) > 0)
+            _fmpz_vec_neg(a, a, 3);
+        else
+            _fmpz_vec_neg(c, c, 3);
+        status = set_rows(W, NULL, a, c, err);
+    }
+    fmpz_clear(aq);
+    fmpz_clear(bq);
+    return status;
+}
+
+/* The sign pattern of h . x over the k rows x of A: bit 1 for a positive
+   value, bit 2 for a negative one.  */
+static int
+signs(const fmpz * h, const fmpz * A, slong k, fmpz_t t)
+{
+    slong j;
+    int r = 0, sg;
+
+    for (j = 0; j < k && r != 3; j++)
+    {
+        sg = _wc_zvec3_dot_sgn_fast(h, A + 3 * j, t);
+        r |= sg > 0 ? 1 : sg < 0 ? 2 : 0;
+    }
+    return r;
+}
+
+/* W = span(y) + pos(A) (k rows of A, y among them), closed, when the fan
+   did not settle it.  Its facets lie on planes through y and a row x,
+   with normal h = y x x (when h . A has one sign); if every such h is
+   normal to all rows, W lies in the plane h . g = 0 and is bounded
+   there, if at all, by c = h x y.  k^2 sign tests: up to 32 rows, else
+   *done := 0.  */
+static int
+line_sum(wc_cone_t W, int * done, ws_struct * w, const fmpz * y, slong k,
+         wc_error_t err)
+{
+    fmpz * h, * a, * c, * H, * t = SCRATCH(w);
+    slong i, m = 0;
+    int sg, flat = 1, status = WC_OK;
+
+    if (k > 32)
+    {
+        *done = 0;
+        return WC_OK;
+    }
+    h = _fmpz_vec_init(3 * k + 9);
+    a = h + 3;
+    c = h + 6;
+    H = h + 9;
+    for (i = 0; i < k; i++)
+    {
+        _wc_zvec3_cross(h, y, w->G + 3 * i);
+        if (_fmpz_vec_is_zero(h, 3))
+            continue;
+        _fmpz_vec_set(a, h, 3);
+        sg = signs(h, w->G, k, t);
+        flat &= sg == 0;
+        if (sg == 1)
+            _fmpz_vec_neg(h, h, 3);
+        if (sg == 1 || sg == 2)
+            _fmpz_vec_set(H + 3 * m++, h, 3);
+    }
+    if (_fmpz_vec_is_zero(a, 3))
+        _wc_cone3_set_line(W, y);
+    else if (flat)
+    {
+        _wc_zvec3_cross(c, a, y);
+        sg = signs(c, w->G, k, t);
+        if (sg == 1)
+            _fmpz_vec_neg(c, c, 3);
+        status = set_rows(W, a, sg == 1 || sg == 2 ? c : NULL, NULL, err);
+    }
+    else if (m == 0)
+        _wc_cone3_set_space(W);
+    else
+    {
+        fmpq_mat_t A;
+
+        fmpq_mat_init(A, m, 3);
+        for (i = 0; i < 3 * m; i++)
+            fmpz_set(fmpq_mat_entry_num(A, i / 3, i % 3), H + i);
+        status = wc_cone_set_hrep(W, NULL, A, NULL, err);
+        fmpq_mat_clear(A);
+    }
+    _fmpz_vec_clear(h, 3 * k + 9);
+    return status;
+}
+
+/* W := the fan of the generators, or for a line V_x line_sum's
+   conversion; *done := 0 when neither settles it.  Returns WC_OK, or
+   WC_EINTERNAL (*err_set: err set, else out of memory).  */
+static int
+set_w(wc_cone_t W, int * done, int * err_set, ws_struct * w, int kind,
+      int apex, wc_error_t err)
 {
     _wc_fan3_t F;
     slong k;
@@ -606,17 +775,27 @@ set_w(wc_cone_t W, int * done, ws_struct * w, int kind, int apex)
         _wc_cone3_set_line(W, Y(w));
         return WC_OK;
     }
-    _wc_fan3_init(F);
-    r = _wc_fan3(F, w->G, k);
-    if (r == WC_FAN3_NOMEM)
-        status = WC_EINTERNAL;
-    else if (r == WC_FAN3_POINTED)
-        status = _wc_cone3_set_fan(W, F, 0);
-    else if (r == WC_FAN3_SPACE)
-        _wc_cone3_set_space(W);
-    else
+    /* A line and at most two edges: not R^3, not pointed.  */
+    r = WC_FAN3_OTHER;
+    if (kind != V_LINE || k >= 5)
+    {
+        _wc_fan3_init(F);
+        r = _wc_fan3(F, w->G, k);
+        if (r == WC_FAN3_NOMEM)
+            status = WC_EINTERNAL;
+        else if (r == WC_FAN3_POINTED)
+            status = _wc_cone3_set_fan(W, F, 0);
+        else if (r == WC_FAN3_SPACE)
+            _wc_cone3_set_space(W);
+        _wc_fan3_clear(F);
+    }
+    if (r == WC_FAN3_OTHER && kind == V_LINE)
+    {
+        *err_set = 1;
+        return line_sum(W, done, w, Y(w), k, err);
+    }
+    if (r == WC_FAN3_OTHER)
         *done = 0;
-    _wc_fan3_clear(F);
     if (status == WC_OK && *done && kind == V_RAY && !apex
         && !faces_holding(W, Y(w), SCRATCH(w)))
         status = WC_EINTERNAL;
@@ -677,18 +856,10 @@ plan(ws_struct * w, const char * mode)
         w->ne += (x == 'l' || x == 'r' || x == 'm') + 2 * (x == 'n');
         w->nq += (x == 'l' || x == 'r') + 2 * (x == 'n' || x == 'm');
     }
-    if (w->nq == 0)
-        return 1;
-    /* Friction edges and equalities of rank at most 1 (or none) with
-       strict rows or no rows at all: V_OTHER, left to the general route.
-       Rank 2 and no rows: V_x is a line, and with one or two edges W
-       holds that line but is not R^3 (the edges' projections along it
-       cannot positively span a plane).  */
-    if (w->ne <= 1 && (w->ns > 0 || w->nh == 0))
-        return 0;
-    if (w->ne <= 2 && w->ns == 0 && w->nh == 0 && w->nq < 3)
-        return 0;
-    return 1;
+    /* Friction edges and one equality (rank at most 1) with rows other
+       than those V_PLANE takes: V_OTHER, left to the general route.  */
+    return w->nq == 0 || w->ne > 1
+        || (w->nh == 0 && (w->ns == 0 || (w->ns == 1 && w->nq == 1)));
 }
 
 /* The images of V_x's generators under M, then the friction edges, into
@@ -759,6 +930,13 @@ _wc_wrench_cone_direct3(wc_cone_t W, int * done, const wc_problem_t P,
         err_set = 1;
         goto finish;
     }
+    if (kind == V_PLANE)
+    {
+        *done = 1;
+        status = plane_sum(W, &w, err);
+        err_set = 1;
+        goto finish;
+    }
     if (kind < 0 || kind == V_OTHER)
         goto finish;
     *done = 1;
@@ -768,7 +946,7 @@ _wc_wrench_cone_direct3(wc_cone_t W, int * done, const wc_problem_t P,
         goto finish;
     }
     generators(&w, kind, u, FV);
-    status = set_w(W, done, &w, kind, apex);
+    status = set_w(W, done, &err_set, &w, kind, apex, err);
 
 finish:
     fmpz_clear(w.ma);
