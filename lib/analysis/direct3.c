@@ -35,6 +35,7 @@
 #include "exact/vec3.h"
 #include "exact/fan3.h"
 #include "exact/cone3.h"
+#include "analysis/zrows3.h"
 #include "analysis/direct3.h"
 
 /* What V_x is.  */
@@ -67,41 +68,6 @@ typedef __int128 wide_t;
 #define FITS(x) ((x) >= -(wide_t) COEFF_MAX && (x) <= (wide_t) COEFF_MAX)
 #endif
 #define SMALL(x) (!COEFF_IS_MPZ(*(x)))
-
-static ulong
-gcd_ui(ulong a, ulong b)
-{
-    while (b != 0)
-    {
-        ulong r = a % b;
-
-        a = b;
-        b = r;
-    }
-    return a;
-}
-
-/* x := x / content(x).  */
-static void
-primitive(fmpz * x, fmpz_t g)
-{
-    if (SMALL(x) && SMALL(x + 1) && SMALL(x + 2))
-    {
-        ulong a = FLINT_ABS(x[0]), b = FLINT_ABS(x[1]), c = FLINT_ABS(x[2]);
-        slong d = (slong) gcd_ui(gcd_ui(a, b), c);
-
-        if (d > 1)
-        {
-            x[0] /= d;
-            x[1] /= d;
-            x[2] /= d;
-        }
-        return;
-    }
-    _fmpz_vec_content(g, x, 3);
-    if (!fmpz_is_one(g) && !fmpz_is_zero(g))
-        _fmpz_vec_scalar_divexact_fmpz(x, x, 3, g);
-}
 
 #ifdef __SIZEOF_INT128__
 /* x[0..k) := a[0..k) when every entry fits a word (then 1; else 0 and x
@@ -155,7 +121,7 @@ point_normal(fmpz * R, fmpz * N, const wc_fixel_struct * f, const fmpz * O,
         && SMALL(d0) && SMALL(c1) && SMALL(d1) && SMALL(O) && SMALL(O + 1)
         && SMALL(Do))
     {
-        slong gp = (slong) gcd_ui(*b0, *b1), gn = (slong) gcd_ui(*d0, *d1);
+        slong gp = (slong) _wc_zrow3_gcd_ui(*b0, *b1), gn = (slong) _wc_zrow3_gcd_ui(*d0, *d1);
         wide_t r[3], n[2], x0, x1;
 
         /* Dp = lcm(b0, b1) = (b0 / gp) b1 < 2^124: the products below
@@ -212,7 +178,7 @@ column(fmpz * c, const fmpz * D, const fmpz * R, fmpz_t g, int prim,
         if (set_wide(c, x, 3))
         {
             if (prim)
-                primitive(c, g);
+                _wc_zrow3_primitive(c, g);
             return;
         }
     }
@@ -222,7 +188,7 @@ column(fmpz * c, const fmpz * D, const fmpz * R, fmpz_t g, int prim,
     fmpz_mul(c + 2, R + 0, D + 1);
     fmpz_submul(c + 2, R + 1, D + 0);
     if (prim)
-        primitive(c, g);
+        _wc_zrow3_primitive(c, g);
     if (sign < 0)
         _fmpz_vec_neg(c, c, 3);
 }
@@ -343,7 +309,7 @@ eq_rank(ws_struct * w, fmpz * u)
             _wc_zvec3_cross(u, e1, x);
             r = _fmpz_vec_is_zero(u, 3) ? 1 : 2;
             if (r == 2)
-                primitive(u, SCRATCH(w));
+                _wc_zrow3_primitive(u, SCRATCH(w));
         }
         else if (_wc_zvec3_dot_sgn_fast(u, x, SCRATCH(w)) != 0)
             r = 3;
@@ -379,75 +345,6 @@ on_line(ws_struct * w, fmpz * u, int * apex)
     return V_RAY;
 }
 
-static int
-row_cmp(const fmpz * a, const fmpz * b)
-{
-    int c, j;
-
-    for (j = 0; j < 3; j++)
-        if (SMALL(a + j) && SMALL(b + j))
-        {
-            if (a[j] != b[j])
-                return a[j] < b[j] ? -1 : 1;
-        }
-        else if ((c = fmpz_cmp(a + j, b + j)) != 0)
-            return c;
-    return 0;
-}
-
-static void
-row_swap(fmpz * a, fmpz * b)
-{
-    fmpz_swap(a + 0, b + 0);
-    fmpz_swap(a + 1, b + 1);
-    fmpz_swap(a + 2, b + 2);
-}
-
-/* Heap sort of the rows A[0..k) (no allocation, no recursion).  */
-static void
-sift(fmpz * A, slong root, slong k)
-{
-    slong c;
-
-    while ((c = 2 * root + 1) < k)
-    {
-        if (c + 1 < k && row_cmp(A + 3 * c, A + 3 * (c + 1)) < 0)
-            c++;
-        if (row_cmp(A + 3 * root, A + 3 * c) >= 0)
-            return;
-        row_swap(A + 3 * root, A + 3 * c);
-        root = c;
-    }
-}
-
-/* A[0..k) := its distinct nonzero rows, sorted, in place; returns their
-   number.  */
-static slong
-distinct(fmpz * A, slong k)
-{
-    slong i, m = 0;
-
-    for (i = k / 2 - 1; i >= 0; i--)
-        sift(A, i, k);
-    for (i = k - 1; i > 0; i--)
-    {
-        row_swap(A, A + 3 * i);
-        sift(A, 0, i);
-    }
-    for (i = 0; i < k; i++)
-    {
-        fmpz * x = A + 3 * i;
-
-        if (_fmpz_vec_is_zero(x, 3)
-            || (m > 0 && row_cmp(A + 3 * (m - 1), x) == 0))
-            continue;
-        if (m < i)
-            row_swap(A + 3 * m, x);
-        m++;
-    }
-    return m;
-}
-
 /* G gets M x (primitive), negated when sign < 0.  */
 static void
 put_image(ws_struct * w, const fmpz * x, int sign)
@@ -457,7 +354,7 @@ put_image(ws_struct * w, const fmpz * x, int sign)
     fmpz_mul(y + 0, w->ma, x + 0);
     fmpz_mul(y + 1, w->ma, x + 1);
     fmpz_mul(y + 2, w->mb, x + 2);
-    primitive(y, SCRATCH(w));
+    _wc_zrow3_primitive(y, SCRATCH(w));
     if (sign < 0)
         _fmpz_vec_neg(y, y, 3);
 }
@@ -522,7 +419,7 @@ plane_of_rows(ws_struct * w, fmpz * u)
             r = -1;
             goto done;
         }
-    primitive(u, t);
+    _wc_zrow3_primitive(u, t);
     for (i = 1; i < w->nh; i++)
     {
         const fmpz * x = w->H + 3 * i;
@@ -581,7 +478,7 @@ settle_v(ws_struct * w, _wc_fan3_t FV, fmpz * u, int * apex)
     if ((r = plane_of_rows(w, u)) >= 0)
         return r ? V_LINE : V_OTHER;
     _fmpz_vec_set(w->G, w->H, 3 * w->nh);     /* G's room for images */
-    k = distinct(w->G, w->nh);
+    k = _wc_zrows3_distinct(w->G, w->nh);
     r = _wc_fan3(FV, w->G, k);
     if (r == WC_FAN3_NOMEM)
         return -1;
@@ -764,7 +661,7 @@ set_w(wc_cone_t W, int * done, int * err_set, ws_struct * w, int kind,
     slong k;
     int r, status = WC_OK;
 
-    k = distinct(w->G, w->ng);
+    k = _wc_zrows3_distinct(w->G, w->ng);
     if (k == 0)
     {
         _wc_cone3_set_origin(W);
@@ -775,8 +672,16 @@ set_w(wc_cone_t W, int * done, int * err_set, ws_struct * w, int kind,
         _wc_cone3_set_line(W, Y(w));
         return WC_OK;
     }
-    /* A line and at most two edges: not R^3, not pointed.  */
+    /* A line and at most two edges: not R^3, not pointed.  For V_x the
+       origin or a line, the friction edges around the part often span
+       R^3: a certificate in O(k) sign tests spares the fan.  */
     r = WC_FAN3_OTHER;
+    if ((kind == V_ORIGIN || kind == V_LINE)
+        && _wc_zrows3_span_space(w->G, k))
+    {
+        _wc_cone3_set_space(W);
+        return WC_OK;
+    }
     if (kind != V_LINE || k >= 5)
     {
         _wc_fan3_init(F);
