@@ -163,6 +163,40 @@ check_space(const fmpz * A, slong k)
     return r;
 }
 
+static int
+has_zero(const fmpz * A, slong k)
+{
+    slong i;
+
+    for (i = 0; i < k; i++)
+        if (_fmpz_vec_is_zero(A + 3 * i, 3))
+            return 1;
+    return 0;
+}
+
+static int
+det_nonzero(const fmpz * a, const fmpz * b, const fmpz * c)
+{
+    fmpz_t d, t;
+    int r;
+
+    fmpz_init(d);
+    fmpz_init(t);
+    fmpz_mul(t, b + 1, c + 2);
+    fmpz_submul(t, b + 2, c + 1);
+    fmpz_mul(d, a + 0, t);
+    fmpz_mul(t, b + 2, c + 0);
+    fmpz_submul(t, b + 0, c + 2);
+    fmpz_addmul(d, a + 1, t);
+    fmpz_mul(t, b + 0, c + 1);
+    fmpz_submul(t, b + 1, c + 0);
+    fmpz_addmul(d, a + 2, t);
+    r = !fmpz_is_zero(d);
+    fmpz_clear(d);
+    fmpz_clear(t);
+    return r;
+}
+
 int
 main(void)
 {
@@ -188,6 +222,7 @@ main(void)
         if (k >= 4)
         {
             slong j, p[3] = { 0, k / 3, 2 * k / 3 }, q;
+            int r;
 
             do
                 q = wctest_randint(0, k - 1);
@@ -198,7 +233,12 @@ main(void)
                 fmpz_add(A + 3 * q + j, A + 3 * q + j, A + 3 * p[2] + j);
                 fmpz_neg(A + 3 * q + j, A + 3 * q + j);
             }
-            found += check_space(A, k);
+            r = check_space(A, k);
+            found += r;
+            if (!r && !has_zero(A, k) && det_nonzero(A + 3 * p[0],
+                                                    A + 3 * p[1],
+                                                    A + 3 * p[2]))
+                wctest_fail("_wc_zrows3_span_space missed a certificate");
         }
         _fmpz_vec_clear(A, 3 * k);
     }
