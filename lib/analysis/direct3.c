@@ -21,10 +21,17 @@
    the fan of M V_x's generators and the friction edges, written directly
    in canonical form; when V_x is a ray whose apex is excluded (strict
    rows), a face of W is included iff it contains M times that ray (the
-   rule of wc_cone_image_sum).  Without friction edges, any other V_x
-   gives W = M V_x from the rows times M^-1 in one general conversion.
-   Everything else -- equalities of rank 1 with friction edges, cones the
-   fan does not settle -- is left to the general route.  */
+   rule of wc_cone_image_sum); edges around the part often span R^3,
+   which an O(k) certificate (zrows3.h) settles before the fan.  A line
+   V_x whose sum with the edges the fan leaves (it has lineality), and
+   rank 1 with no rows (V_x a plane) or one strict row and one edge (an
+   open half-plane), give W from an H-representation written directly
+   (line_sum, plane_sum) in one general conversion; so does, without
+   friction edges, any other V_x: W = M V_x from the rows times M^-1.
+   Everything else -- equalities of rank 1 with other rows and edges,
+   pointed cones the fan does not settle -- is left to the general route,
+   decided from the mode's letters before anything is built when they
+   suffice (plan).  Entries that fit a word are computed in 128 bits.  */
 
 #include <config.h>
 
@@ -827,8 +834,9 @@ _wc_wrench_cone_direct3(wc_cone_t W, int * done, const wc_problem_t P,
         wc_cone_set_empty(W);
         return WC_OK;
     }
-    /* V_POLAR's images and H's distinct rows need max(nh, 2) rows.  */
-    w.gi = FLINT_MAX(w.nh, 2);
+    /* V_POLAR's images and H's distinct rows need nh rows ahead of the
+       edges, a line's images 2, plane_sum's scratch 3.  */
+    w.gi = FLINT_MAX(w.nh, 3);
     len = 3 * (w.ne + w.nh + w.ns + w.gi + w.nq) + 12;
     z = _fmpz_vec_init(len);
     w.E = z;
