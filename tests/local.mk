@@ -24,6 +24,7 @@ C_TESTS = \
 	tests/t-hull3 \
 	tests/t-routes \
 	tests/t-direct3 \
+	tests/t-zrows3 \
 	tests/t-modes \
 	tests/t-modeswalk \
 	tests/t-verify \

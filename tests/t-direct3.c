@@ -13,12 +13,15 @@
    point, zero and per-fixel friction, near fixels), for fixels on a
    circle with normals through its centre (V_x on a line), for collinear
    fixels with parallel normals, coincident fixels with opposite normals
-   and zero friction, and for random and uniform modes: the fast path,
+   and zero friction, all of them also with numbers past a word, and for
+   random and uniform modes (n = 1 included): the fast path,
    where it answers, and wc_wrench_cone_direct give the cone of the
    general route, field for field and byte for byte in JSON, with the same
    status.  _wc_cone3_set_line (the canonical line the fast path writes
    for the modes of s letters around the part) is compared with the
-   general conversion of that line.  The fast path must answer for at least a quarter of the cones
+   general conversion of that line.  A quarter of the problems get
+   numbers past a word (big_numbers), for the fmpz side of every 128-bit
+   shortcut in direct3.c.  The fast path must answer for at least a quarter of the cones
    (it answers about half of them) or the test fails.  */
 
 #include <config.h>
@@ -170,6 +173,117 @@ line_problem(wc_problem_t P, slong n)
     }
 }
 
+/* One sliding fixel whose friction edge lies in the plane M V_x: with
+   n = (0, 1), r = p - com = (1, y), I = m and mu_k = 1/2, the edge's
+   component across that plane is a multiple of 2 +- y / 2, zero for
+   y = -+4.  Both slide directions and both signs of y, so that the edge
+   lies in the plane on either side of the open half-plane, and off it;
+   other fixels unconstrained (u) or none.  */
+static void
+check_in_plane(void)
+{
+    slong y, k, extra;
+    char mode[4];
+
+    for (y = -4; y <= 4; y += 8)
+        for (k = 0; k < 2; k++)
+            for (extra = 0; extra < 2; extra++)
+            {
+                wc_problem_t P;
+                wc_fixel_struct * f;
+
+                wc_problem_init(P);
+                fmpq_set_si(P->mu_s, 1, 2);
+                fmpq_set_si(P->mu_k, 1, 2);
+                fmpq_set_si(P->mass, 3, 1);
+                fmpq_set_si(P->inertia, 3, 1);
+                fmpq_set_si(P->com + 0, 1, 3);
+                fmpq_set_si(P->com + 1, -2, 5);
+                f = wc_problem_add_fixel(P);
+                fmpq_set_si(f->point + 0, 4, 3);
+                fmpq_set_si(f->point + 1, 5 * y - 2, 5);
+                fmpq_set_si(f->normal + 1, 1, 1);
+                f->state = WC_TOUCHING;
+                mode[0] = "lr"[k];
+                mode[1] = '\0';
+                if (extra)
+                {
+                    f = wc_problem_add_fixel(P);
+                    fmpq_set_si(f->point + 0, 1, 1);
+                    fmpq_set_si(f->normal + 0, 1, 1);
+                    f->state = WC_NEAR;
+                    mode[1] = 'u';
+                    mode[2] = '\0';
+                }
+                if (!check(P, mode))
+                    wctest_fail_problem(P, mode, "the fast path gave up");
+                wc_problem_clear(P);
+            }
+}
+
+/* x := x (2^e + a) / (2^e + b) for a, b in [1, 9]: the same sign, and
+   numerators and denominators about 2^e.  */
+static void
+inflate(fmpq_t x, slong e)
+{
+    fmpz_t p, q;
+
+    fmpz_init(p);
+    fmpz_init(q);
+    fmpz_one(p);
+    fmpz_mul_2exp(p, p, e);
+    fmpz_add_ui(q, p, wctest_randint(1, 9));
+    fmpz_add_ui(p, p, wctest_randint(1, 9));
+    fmpz_mul(fmpq_numref(x), fmpq_numref(x), p);
+    fmpz_mul(fmpq_denref(x), fmpq_denref(x), q);
+    fmpq_canonicalise(x);
+    fmpz_clear(p);
+    fmpz_clear(q);
+}
+
+/* Numbers past a word, or whose products are: the points and the centre
+   of mass scaled by one factor (collinear points stay collinear), each
+   normal by its own positive factor (same direction), the friction
+   coefficients, mass and inertia by theirs, with numerators and
+   denominators of about 2^e, e in [10, 100] (the 128-bit paths of
+   direct3.c give up somewhere in between).  */
+static void
+big_numbers(wc_problem_t P)
+{
+    slong e = wctest_randint(10, 100), i, j;
+    fmpq_t s, t;
+
+    fmpq_init(s);
+    fmpq_init(t);
+    fmpq_one(s);
+    inflate(s, e);
+    for (j = 0; j < 2; j++)
+        fmpq_mul(P->com + j, P->com + j, s);
+    for (i = 0; i < P->n; i++)
+    {
+        wc_fixel_struct * f = P->fixels + i;
+
+        for (j = 0; j < 2; j++)
+            fmpq_mul(f->point + j, f->point + j, s);
+        fmpq_one(t);
+        if (wctest_chance(1, 2))
+            inflate(t, e);
+        for (j = 0; j < 2; j++)
+            fmpq_mul(f->normal + j, f->normal + j, t);
+    }
+    if (wctest_chance(1, 2))
+    {
+        fmpq_one(t);
+        inflate(t, e);
+        fmpq_mul(P->mu_s, P->mu_s, t);
+        fmpq_mul(P->mu_k, P->mu_k, t);
+        inflate(P->mass, e);
+        inflate(P->inertia, e);
+    }
+    fmpq_clear(s);
+    fmpq_clear(t);
+}
+
 /* _wc_cone3_set_line against the general conversion of one line, for
    vectors with zero, negative and non-coprime entries.  */
 static void
@@ -222,6 +336,7 @@ main(void)
     char mode[64];
 
     wctest_init("t-direct3");
+    check_in_plane();
     iters = wctest_iters(1500);
     for (i = 0; i < iters; i++)
     {
@@ -240,6 +355,8 @@ main(void)
             line_problem(P, wctest_randint(1, 8));
         else
             wctest_random_problem(P, 2, 6);
+        if (wctest_chance(1, 4))
+            big_numbers(P);
         if (wctest_chance(1, 2))
             wctest_random_mode(mode, P);
         else

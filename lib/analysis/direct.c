@@ -34,27 +34,31 @@ append_row(fmpq_mat_t A, slong * r, const fmpq_mat_t J, slong col, int sign)
     (*r)++;
 }
 
+static int general(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
+                   const char * mode, wc_error_t err);
+
 int
 wc_wrench_cone_direct(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
                       const char * mode, wc_error_t err)
 {
     int status, done = 0;
 
-    /* Integer rows and generators straight from the model when V_x is
-       simple (direct3.c); the general route below otherwise, and always
-       for a trace, which shows its rational matrices.  */
+    /* The mode is checked once.  Integer rows and generators straight
+       from the model when V_x is simple (direct3.c); the general route
+       below otherwise, and always for a trace, which shows its rational
+       matrices.  */
+    if ((status = wc_mode_check(P, mode, WC_TABLE_CONE, err)) != WC_OK)
+    {
+        wc_cone_set_empty(W);
+        return status;
+    }
     if (trace == NULL && W->d == 3)
     {
-        if ((status = wc_mode_check(P, mode, WC_TABLE_CONE, err)) != WC_OK)
-        {
-            wc_cone_set_empty(W);
-            return status;
-        }
         status = _wc_wrench_cone_direct3(W, &done, P, mode, err);
         if (status != WC_OK || done)
             return status;
     }
-    return _wc_wrench_cone_direct_general(W, trace, P, mode, err);
+    return general(W, trace, P, mode, err);
 }
 
 int
@@ -62,10 +66,6 @@ _wc_wrench_cone_direct_general(wc_cone_t W, wc_trace_t trace,
                                const wc_problem_t P, const char * mode,
                                wc_error_t err)
 {
-    slong n = P->n, i, j, q = 0, re = 0, rl = 0, rt = 0;
-    fmpq_mat_t J, M, Eq, Le, Lt, Q, Vr;
-    fmpq e[4];
-    wc_cone_t V;
     int status;
 
     if ((status = wc_mode_check(P, mode, WC_TABLE_CONE, err)) != WC_OK)
@@ -73,6 +73,20 @@ _wc_wrench_cone_direct_general(wc_cone_t W, wc_trace_t trace,
         wc_cone_set_empty(W);
         return status;
     }
+    return general(W, trace, P, mode, err);
+}
+
+/* The general route, for a mode that passed wc_mode_check.  */
+static int
+general(wc_cone_t W, wc_trace_t trace, const wc_problem_t P,
+        const char * mode, wc_error_t err)
+{
+    slong n = P->n, i, j, q = 0, re = 0, rl = 0, rt = 0;
+    fmpq_mat_t J, M, Eq, Le, Lt, Q, Vr;
+    fmpq e[4];
+    wc_cone_t V;
+    int status;
+
     fmpq_mat_init(J, 3, 2 * n);
     fmpq_mat_init(M, 3, 3);
     fmpq_mat_init(Eq, 2 * n, 3);       /* trimmed below */

@@ -21,10 +21,17 @@
    the fan of M V_x's generators and the friction edges, written directly
    in canonical form; when V_x is a ray whose apex is excluded (strict
    rows), a face of W is included iff it contains M times that ray (the
-   rule of wc_cone_image_sum).  Without friction edges, any other V_x
-   gives W = M V_x from the rows times M^-1 in one general conversion.
-   Everything else -- equalities of rank 1 with friction edges, cones the
-   fan does not settle -- is left to the general route.  */
+   rule of wc_cone_image_sum); edges around the part often span R^3,
+   which an O(k) certificate (zrows3.h) settles before the fan.  A line
+   V_x whose sum with the edges the fan leaves (it has lineality), and
+   rank 1 with no rows (V_x a plane) or one strict row and one edge (an
+   open half-plane), give W from an H-representation written directly
+   (line_sum, plane_sum) in one general conversion; so does, without
+   friction edges, any other V_x: W = M V_x from the rows times M^-1.
+   Everything else -- equalities of rank 1 with other rows and edges,
+   pointed cones the fan does not settle -- is left to the general route,
+   decided from the mode's letters before anything is built when they
+   suffice (plan).  Entries that fit a word are computed in 128 bits.  */
 
 #include <config.h>
 
@@ -35,40 +42,77 @@
 #include "exact/vec3.h"
 #include "exact/fan3.h"
 #include "exact/cone3.h"
+#include "analysis/zrows3.h"
 #include "analysis/direct3.h"
 
 /* What V_x is.  */
-enum { V_EMPTY, V_ORIGIN, V_RAY, V_LINE, V_POLAR, V_OTHER };
+enum { V_EMPTY, V_ORIGIN, V_RAY, V_LINE, V_POLAR, V_PLANE, V_OTHER };
 
 typedef struct
 {
     slong n;
-    fmpz * jn;          /* 3n: primitive positive multiples of J's n columns */
-    fmpz * jt;          /* 3n: the t columns (only where the mode needs them) */
-    fmpz * H;           /* 3n: rows h . nudot <= 0 */
-    fmpz * S;           /* 3n: rows h . nudot < 0 */
-    fmpz * Q;           /* 6n: the friction edges mapped by -J */
-    fmpz * G;           /* 3 (2n + 2): generators of W */
-    fmpz * U;           /* 3 (2n + 2): the same, sorted and without repeats */
-    fmpz * t;           /* 8 entries: scratch, see SCRATCH */
-    const fmpz ** E;    /* 2n: the equality rows */
-    slong * idx;        /* 2n + 2 */
-    slong nh, ns, nq, ne, ng;
+    fmpz * E;           /* 3 ne: the equality rows */
+    fmpz * H;           /* 3 nh: rows h . nudot <= 0 */
+    fmpz * S;           /* 3 ns: rows h . nudot < 0 */
+    fmpz * Q;           /* 3 nq: the friction edges mapped by -J */
+    fmpz * G;           /* 3 (gi + nq): generators of W, images first */
+    fmpz * t;           /* 9 entries: scratch, see SCRATCH and Y */
+    slong nh, ns, nq, ne, ng, gi;
     fmpz_t ma, mb;      /* M x is a positive multiple of (ma x0, ma x1, mb x2) */
 }
 ws_struct;
 
-/* The scratch entry of the helpers below (t[4], t[5] hold an edge).  */
+/* The scratch entry of the helpers below (t[4], t[5] hold an edge; Y,
+   t[6] to t[8], the first image).  */
 #define SCRATCH(w) ((w)->t + 2)
+#define Y(w) ((w)->t + 6)
 
-/* x := x / content(x).  */
-static void
-primitive(fmpz * x, fmpz_t g)
+/* Integers that fit a word are computed in 128 bits, then stored; every
+   other case takes the same formulas in fmpz arithmetic.  Both give the
+   same integers.  */
+#ifdef __SIZEOF_INT128__
+typedef __int128 wide_t;
+#define FITS(x) ((x) >= -(wide_t) COEFF_MAX && (x) <= (wide_t) COEFF_MAX)
+#endif
+#define SMALL(x) (!COEFF_IS_MPZ(*(x)))
+
+/* The sign of a . b; _wc_zvec3_dot_sgn_fast inline, for the loops over
+   rows.  */
+static inline int
+dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t)
 {
-    _fmpz_vec_content(g, x, 3);
-    if (!fmpz_is_one(g) && !fmpz_is_zero(g))
-        _fmpz_vec_scalar_divexact_fmpz(x, x, 3, g);
+#ifdef __SIZEOF_INT128__
+    if (SMALL(a) && SMALL(a + 1) && SMALL(a + 2) && SMALL(b) && SMALL(b + 1)
+        && SMALL(b + 2))
+    {
+        wide_t x = (wide_t) a[0] * b[0] + (wide_t) a[1] * b[1]
+            + (wide_t) a[2] * b[2];
+
+        return (x > 0) - (x < 0);
+    }
+#endif
+    return _wc_zvec3_dot_sgn_fast(a, b, t);
 }
+
+#ifdef __SIZEOF_INT128__
+/* x[0..k) := a[0..k) when every entry fits a word (then 1; else 0 and x
+   untouched).  */
+static inline int
+set_wide(fmpz * x, const wide_t * a, slong k)
+{
+    slong j;
+
+    for (j = 0; j < k; j++)
+        if (!FITS(a[j]))
+            return 0;
+    for (j = 0; j < k; j++)
+        if (SMALL(x + j))
+            x[j] = (slong) a[j];        /* a word entry is its value */
+        else
+            fmpz_set_si(x + j, (slong) a[j]);
+    return 1;
+}
+#endif
 
 /* (X0, X1) / D := (a0, a1), D > 0 the lcm of the denominators.  */
 static void
@@ -88,18 +132,93 @@ common_den(fmpz * X, fmpz_t D, const fmpq * a, fmpz_t g)
     fmpz_mul(X + 1, fmpq_numref(a + 1), g);
 }
 
+/* R := (p - com) as (R0, R1) / R2, R2 > 0, from O / Do = com; N := the
+   normal times the lcm of its denominators.  */
+static void
+point_normal(fmpz * R, fmpz * N, const wc_fixel_struct * f, const fmpz * O,
+             const fmpz_t Do, fmpz_t g)
+{
+#ifdef __SIZEOF_INT128__
+    const fmpq * p = f->point, * v = f->normal;
+    const fmpz * a0 = fmpq_numref(p), * b0 = fmpq_denref(p),
+        * a1 = fmpq_numref(p + 1), * b1 = fmpq_denref(p + 1),
+        * c0 = fmpq_numref(v), * d0 = fmpq_denref(v),
+        * c1 = fmpq_numref(v + 1), * d1 = fmpq_denref(v + 1);
+
+    if (SMALL(a0) && SMALL(b0) && SMALL(a1) && SMALL(b1) && SMALL(c0)
+        && SMALL(d0) && SMALL(c1) && SMALL(d1) && SMALL(O) && SMALL(O + 1)
+        && SMALL(Do))
+    {
+        slong gp = (slong) _wc_zrow3_gcd_ui(*b0, *b1), gn = (slong) _wc_zrow3_gcd_ui(*d0, *d1);
+        wide_t r[3], n[2], x0, x1;
+
+        /* Dp = lcm(b0, b1) = (b0 / gp) b1 < 2^124: the products below
+           are formed only once it fits a word.  */
+        r[2] = (wide_t) (*b0 / gp) * *b1;
+        n[0] = (wide_t) *c0 * (*d1 / gn);
+        n[1] = (wide_t) *c1 * (*d0 / gn);
+        if (FITS(r[2]))
+        {
+            x0 = (wide_t) *a0 * (*b1 / gp);
+            x1 = (wide_t) *a1 * (*b0 / gp);
+            if (FITS(x0) && FITS(x1))
+            {
+                r[0] = x0 * *Do - (wide_t) *O * r[2];
+                r[1] = x1 * *Do - (wide_t) O[1] * r[2];
+                r[2] *= *Do;
+                if (set_wide(R, r, 3) && set_wide(N, n, 2))
+                    return;
+            }
+        }
+    }
+#endif
+    common_den(R, R + 2, f->point, g);
+    fmpz_mul(R + 0, R + 0, Do);
+    fmpz_submul(R + 0, O + 0, R + 2);
+    fmpz_mul(R + 1, R + 1, Do);
+    fmpz_submul(R + 1, O + 1, R + 2);
+    fmpz_mul(R + 2, R + 2, Do);
+    common_den(N, N + 2, f->normal, g);
+}
+
 /* c := a positive integer multiple of the column of J for the direction
    D (a positive integer multiple of d) at r = (R0, R1) / R2, R2 > 0;
-   primitive when prim is set (equality and strict rows need not be).  */
+   primitive when prim is set (equality and strict rows need not be),
+   negated when sign < 0.  */
 static void
-column(fmpz * c, const fmpz * D, const fmpz * R, fmpz_t g, int prim)
+column(fmpz * c, const fmpz * D, const fmpz * R, fmpz_t g, int prim,
+       int sign)
 {
+#ifdef __SIZEOF_INT128__
+    if (SMALL(D) && SMALL(D + 1) && SMALL(R) && SMALL(R + 1) && SMALL(R + 2))
+    {
+        wide_t x[3];
+
+        x[0] = (wide_t) R[2] * D[0];
+        x[1] = (wide_t) R[2] * D[1];
+        x[2] = (wide_t) R[0] * D[1] - (wide_t) R[1] * D[0];
+        if (sign < 0)
+        {
+            x[0] = -x[0];
+            x[1] = -x[1];
+            x[2] = -x[2];
+        }
+        if (set_wide(c, x, 3))
+        {
+            if (prim)
+                _wc_zrow3_primitive(c, g);
+            return;
+        }
+    }
+#endif
     fmpz_mul(c + 0, R + 2, D + 0);
     fmpz_mul(c + 1, R + 2, D + 1);
     fmpz_mul(c + 2, R + 0, D + 1);
     fmpz_submul(c + 2, R + 1, D + 0);
     if (prim)
-        primitive(c, g);
+        _wc_zrow3_primitive(c, g);
+    if (sign < 0)
+        _fmpz_vec_neg(c, c, 3);
 }
 
 /* Q gets -column(n + sign mu t) for the normal N (integer).  */
@@ -108,98 +227,86 @@ edge(ws_struct * w, const fmpz * N, const fmpq_t mu, int sign,
      const fmpz * R)
 {
     fmpz * D = w->t + 4, * c = w->Q + 3 * w->nq++;
+    const fmpz * a = fmpq_numref(mu), * b = fmpq_denref(mu);
 
-    fmpz_mul(D + 0, fmpq_denref(mu), N + 0);
-    fmpz_mul(D + 1, fmpq_denref(mu), N + 1);
+#ifdef __SIZEOF_INT128__
+    if (SMALL(a) && SMALL(b) && SMALL(N) && SMALL(N + 1))
+    {
+        wide_t x[2];
+
+        x[0] = (wide_t) *b * N[0] - sign * ((wide_t) *a * N[1]);
+        x[1] = (wide_t) *b * N[1] + sign * ((wide_t) *a * N[0]);
+        if (set_wide(D, x, 2))
+        {
+            column(c, D, R, SCRATCH(w), 1, -1);
+            return;
+        }
+    }
+#endif
+    fmpz_mul(D + 0, b, N + 0);
+    fmpz_mul(D + 1, b, N + 1);
     if (sign > 0)
     {
-        fmpz_submul(D + 0, fmpq_numref(mu), N + 1);
-        fmpz_addmul(D + 1, fmpq_numref(mu), N + 0);
+        fmpz_submul(D + 0, a, N + 1);
+        fmpz_addmul(D + 1, a, N + 0);
     }
     else
     {
-        fmpz_addmul(D + 0, fmpq_numref(mu), N + 1);
-        fmpz_submul(D + 1, fmpq_numref(mu), N + 0);
+        fmpz_addmul(D + 0, a, N + 1);
+        fmpz_submul(D + 1, a, N + 0);
     }
-    column(c, D, R, SCRATCH(w), 1);
-    _fmpz_vec_neg(c, c, 3);
+    column(c, D, R, SCRATCH(w), 1, -1);
 }
 
-/* Append the row x (times sign) to the rows A (count *k).  */
-static void
-put_row(fmpz * A, slong * k, const fmpz * x, int sign)
-{
-    if (sign > 0)
-        _fmpz_vec_set(A + 3 * *k, x, 3);
-    else
-        _fmpz_vec_neg(A + 3 * *k, x, 3);
-    (*k)++;
-}
-
-/* The rows of V_x and the generators -J D_x, fixel by fixel.  */
+/* The rows of V_x and the generators -J D_x, fixel by fixel, each row
+   written where it belongs.  */
 static void
 build(ws_struct * w, const wc_problem_t P, const char * mode)
 {
-    fmpz * O = _fmpz_vec_init(2), * R = _fmpz_vec_init(3);
-    fmpz * N = _fmpz_vec_init(3);
-    fmpz_t Do, Dn, g;
+    fmpz * O = _fmpz_vec_init(3), * R = _fmpz_vec_init(3);
+    fmpz * N = _fmpz_vec_init(3), * g = O + 2, * s = SCRATCH(w);
+    fmpz_t Do;
     slong i;
 
     fmpz_init(Do);
-    fmpz_init(Dn);
-    fmpz_init(g);
     w->nh = w->ns = w->nq = w->ne = 0;
     common_den(O, Do, P->com, g);
     for (i = 0; i < w->n; i++)
     {
         const wc_fixel_struct * f = P->fixels + i;
-        fmpz * jn = w->jn + 3 * i, * jt = w->jt + 3 * i;
         char x = mode[i];
 
         if (x == 'u')
             continue;
-        /* r = (P Do - O Dp, ...) / (Dp Do), N = normal times Dn.  */
-        common_den(R, R + 2, f->point, g);
-        fmpz_mul(R + 0, R + 0, Do);
-        fmpz_submul(R + 0, O + 0, R + 2);
-        fmpz_mul(R + 1, R + 1, Do);
-        fmpz_submul(R + 1, O + 1, R + 2);
-        fmpz_mul(R + 2, R + 2, Do);
-        common_den(N, Dn, f->normal, g);
-        column(jn, N, R, g, x == 's');
+        point_normal(R, N, f, O, Do, g);
+        /* The column of the normal, then (l, r, n) that of t = (-n_y,
+           n_x).  */
+        if (x == 's')
+            column(w->H + 3 * w->nh++, N, R, s, 1, -1);
+        else if (x == 'a')
+            column(w->S + 3 * w->ns++, N, R, s, 0, 1);
+        else
+            column(w->E + 3 * w->ne++, N, R, s, 0, 1);
         if (x == 'l' || x == 'r' || x == 'n')
         {
-            fmpz_neg(N + 2, N + 1);             /* t = (-n_y, n_x) */
+            fmpz_neg(N + 2, N + 1);
             fmpz_swap(N + 1, N + 2);
             fmpz_swap(N + 0, N + 1);
-            column(jt, N, R, g, 0);
+            column(x == 'n' ? w->E + 3 * w->ne++ : w->S + 3 * w->ns++,
+                   N, R, s, 0, x == 'l' ? -1 : 1);
             fmpz_swap(N + 0, N + 1);            /* N back to the normal */
             fmpz_swap(N + 1, N + 2);
         }
-        switch (x)
+        if (x == 'l' || x == 'r')
+            edge(w, N, f->mu_k, x == 'l' ? -1 : 1, R);
+        else if (x == 'n' || x == 'm')
         {
-        case 's': put_row(w->H, &w->nh, jn, -1); break;
-        case 'a': put_row(w->S, &w->ns, jn, 1); break;
-        case 'l': w->E[w->ne++] = jn;
-                  put_row(w->S, &w->ns, jt, -1);
-                  edge(w, N, f->mu_k, -1, R); break;
-        case 'r': w->E[w->ne++] = jn;
-                  put_row(w->S, &w->ns, jt, 1);
-                  edge(w, N, f->mu_k, 1, R); break;
-        case 'n': w->E[w->ne++] = jn;
-                  w->E[w->ne++] = jt;
-                  edge(w, N, f->mu_s, -1, R);
-                  edge(w, N, f->mu_s, 1, R); break;
-        case 'm': w->E[w->ne++] = jn;
-                  edge(w, N, f->mu_s, -1, R);
-                  edge(w, N, f->mu_s, 1, R); break;
-        default: break;
+            edge(w, N, f->mu_s, -1, R);
+            edge(w, N, f->mu_s, 1, R);
         }
     }
     fmpz_clear(Do);
-    fmpz_clear(Dn);
-    fmpz_clear(g);
-    _fmpz_vec_clear(O, 2);
+    _fmpz_vec_clear(O, 3);
     _fmpz_vec_clear(R, 3);
     _fmpz_vec_clear(N, 3);
 }
@@ -215,7 +322,7 @@ eq_rank(ws_struct * w, fmpz * u)
 
     for (i = 0; i < w->ne && r < 3; i++)
     {
-        const fmpz * x = w->E[i];
+        const fmpz * x = w->E + 3 * i;
 
         if (r == 0)
         {
@@ -230,9 +337,9 @@ eq_rank(ws_struct * w, fmpz * u)
             _wc_zvec3_cross(u, e1, x);
             r = _fmpz_vec_is_zero(u, 3) ? 1 : 2;
             if (r == 2)
-                primitive(u, SCRATCH(w));
+                _wc_zrow3_primitive(u, SCRATCH(w));
         }
-        else if (_wc_zvec3_dot_sgn_fast(u, x, SCRATCH(w)) != 0)
+        else if (dot_sgn(u, x, SCRATCH(w)) != 0)
             r = 3;
     }
     return r;
@@ -248,7 +355,7 @@ on_line(ws_struct * w, fmpz * u, int * apex)
 
     for (i = 0; i < w->nh + w->ns; i++)
     {
-        s = _wc_zvec3_dot_sgn_fast(i < w->nh ? w->H + 3 * i
+        s = dot_sgn(i < w->nh ? w->H + 3 * i
                                    : w->S + 3 * (i - w->nh), u, SCRATCH(w));
         pos |= s > 0;
         neg |= s < 0;
@@ -261,68 +368,9 @@ on_line(ws_struct * w, fmpz * u, int * apex)
     if (pos)
         _fmpz_vec_neg(u, u, 3);                 /* the ray is -u */
     for (i = 0; i < w->ns; i++)
-        if (_wc_zvec3_dot_sgn_fast(w->S + 3 * i, u, SCRATCH(w)) >= 0)
+        if (dot_sgn(w->S + 3 * i, u, SCRATCH(w)) >= 0)
             return V_EMPTY;
     return V_RAY;
-}
-
-static int
-row_cmp(const fmpz * a, const fmpz * b)
-{
-    int c, j;
-
-    for (j = 0; j < 3; j++)
-        if ((c = fmpz_cmp(a + j, b + j)) != 0)
-            return c;
-    return 0;
-}
-
-/* Heap sort of idx[0..k) by the rows of A (no allocation, no recursion).  */
-static void
-sift(const fmpz * A, slong * idx, slong root, slong k)
-{
-    slong c, t;
-
-    while ((c = 2 * root + 1) < k)
-    {
-        if (c + 1 < k && row_cmp(A + 3 * idx[c], A + 3 * idx[c + 1]) < 0)
-            c++;
-        if (row_cmp(A + 3 * idx[root], A + 3 * idx[c]) >= 0)
-            return;
-        t = idx[root];
-        idx[root] = idx[c];
-        idx[c] = t;
-        root = c;
-    }
-}
-
-/* U := the distinct nonzero rows of A[0..k); returns their number.  */
-static slong
-distinct(fmpz * U, const fmpz * A, slong k, slong * idx)
-{
-    slong i, m = 0, t;
-
-    for (i = 0; i < k; i++)
-        idx[i] = i;
-    for (i = k / 2 - 1; i >= 0; i--)
-        sift(A, idx, i, k);
-    for (i = k - 1; i > 0; i--)
-    {
-        t = idx[0];
-        idx[0] = idx[i];
-        idx[i] = t;
-        sift(A, idx, 0, i);
-    }
-    for (i = 0; i < k; i++)
-    {
-        const fmpz * x = A + 3 * idx[i];
-
-        if (_fmpz_vec_is_zero(x, 3)
-            || (m > 0 && row_cmp(U + 3 * (m - 1), x) == 0))
-            continue;
-        _fmpz_vec_set(U + 3 * m++, x, 3);
-    }
-    return m;
 }
 
 /* G gets M x (primitive), negated when sign < 0.  */
@@ -334,7 +382,7 @@ put_image(ws_struct * w, const fmpz * x, int sign)
     fmpz_mul(y + 0, w->ma, x + 0);
     fmpz_mul(y + 1, w->ma, x + 1);
     fmpz_mul(y + 2, w->mb, x + 2);
-    primitive(y, SCRATCH(w));
+    _wc_zrow3_primitive(y, SCRATCH(w));
     if (sign < 0)
         _fmpz_vec_neg(y, y, 3);
 }
@@ -352,13 +400,13 @@ faces_holding(wc_cone_t W, const fmpz * y, fmpz_t t)
     if (T == NULL)
         return 0;
     for (j = 0; j < m; j++)
-        if (_wc_zvec3_dot_sgn_fast(WC_ROW(W->ineqs, j), y, t) == 0)
+        if (dot_sgn(WC_ROW(W->ineqs, j), y, t) == 0)
             T[nt++] = j;
     for (i = 0; i < k; i++)
     {
         in[i] = 1;
         for (j = 0; j < nt && in[i]; j++)
-            in[i] = _wc_zvec3_dot_sgn_fast(WC_ROW(W->ineqs, T[j]),
+            in[i] = dot_sgn(WC_ROW(W->ineqs, T[j]),
                                            WC_ROW(W->rays, i), t) == 0;
         size += in[i];
     }
@@ -394,30 +442,30 @@ plane_of_rows(ws_struct * w, fmpz * u)
     if (_fmpz_vec_is_zero(u, 3))
         goto done;
     for (i = 0; i < w->nh; i++)
-        if (_wc_zvec3_dot_sgn_fast(u, w->H + 3 * i, t) != 0)
+        if (dot_sgn(u, w->H + 3 * i, t) != 0)
         {
             r = -1;
             goto done;
         }
-    primitive(u, t);
+    _wc_zrow3_primitive(u, t);
     for (i = 1; i < w->nh; i++)
     {
         const fmpz * x = w->H + 3 * i;
 
         _wc_zvec3_cross(c, h, x);
-        s = _wc_zvec3_dot_sgn_fast(u, c, t);
+        s = dot_sgn(u, c, t);
         if (s == 0)
-            opp |= _wc_zvec3_dot_sgn_fast(h, x, t) < 0;
+            opp |= dot_sgn(h, x, t) < 0;
         else if (s > 0 && A != NULL)
         {
             _wc_zvec3_cross(c, A, x);
-            if (_wc_zvec3_dot_sgn_fast(u, c, t) > 0)
+            if (dot_sgn(u, c, t) > 0)
                 A = x;
         }
         else if (s < 0 && B != NULL)
         {
             _wc_zvec3_cross(c, B, x);
-            if (_wc_zvec3_dot_sgn_fast(u, c, t) < 0)
+            if (dot_sgn(u, c, t) < 0)
                 B = x;
         }
         else if (s > 0)
@@ -428,7 +476,7 @@ plane_of_rows(ws_struct * w, fmpz * u)
     if (A != NULL && B != NULL)
     {
         _wc_zvec3_cross(c, A, B);
-        r = opp || _wc_zvec3_dot_sgn_fast(u, c, t) > 0;
+        r = opp || dot_sgn(u, c, t) > 0;
     }
 
 done:
@@ -449,29 +497,199 @@ settle_v(ws_struct * w, _wc_fan3_t FV, fmpz * u, int * apex)
         return w->ns == 0 ? V_ORIGIN : V_EMPTY;
     if (r == 2)
         return on_line(w, u, apex);
+    if (r == 1 && w->nh == 0 && w->nq > 0
+        && (w->ns == 0 || (w->ns == 1 && w->nq == 1)))
+        return V_PLANE;
     if (r == 1 || w->ns > 0 || w->nh == 0)
         return V_OTHER;
     _fmpz_vec_zero(u, 3);
     if ((r = plane_of_rows(w, u)) >= 0)
         return r ? V_LINE : V_OTHER;
-    k = distinct(w->U, w->H, w->nh, w->idx);
-    r = _wc_fan3(FV, w->U, k);
+    _fmpz_vec_set(w->G, w->H, 3 * w->nh);     /* G's room for images */
+    k = _wc_zrows3_distinct(w->G, w->nh);
+    r = _wc_fan3(FV, w->G, k);
     if (r == WC_FAN3_NOMEM)
         return -1;
     return r == WC_FAN3_POINTED ? V_POLAR
         : r == WC_FAN3_SPACE ? V_ORIGIN : V_OTHER;
 }
 
-/* W := the fan of the generators; *done := 0 when the fan does not
-   settle it.  Returns WC_OK, or WC_EINTERNAL when out of memory.  */
+/* W := { g : e . g = 0, h . g <= 0, s . g < 0 } for the rows e, h, s
+   (3 entries each, or NULL), by the general conversion.  */
 static int
-set_w(wc_cone_t W, int * done, ws_struct * w, int kind, int apex)
+set_rows(wc_cone_t W, const fmpz * e, const fmpz * h, const fmpz * s,
+         wc_error_t err)
+{
+    const fmpz * x[3] = { e, h, s };
+    fmpq_mat_t A[3];
+    slong i, j;
+    int status;
+
+    for (i = 0; i < 3; i++)
+    {
+        fmpq_mat_init(A[i], x[i] != NULL, 3);
+        for (j = 0; x[i] != NULL && j < 3; j++)
+            fmpz_set(fmpq_mat_entry_num(A[i], 0, j), x[i] + j);
+    }
+    status = wc_cone_set_hrep(W, A[0], A[1], A[2], err);
+    for (i = 0; i < 3; i++)
+        fmpq_mat_clear(A[i]);
+    return status;
+}
+
+/* V_x = the plane a . nudot = 0 (a the equality row), or with one strict
+   row b the open half-plane b . nudot < 0 in it; M V_x = { g : a' . g =
+   0 (, b' . g < 0) } for a', b' the rows times M^-1.  W = M V_x + pos(Q):
+   a plane plus edges is the plane, a closed half-space or R^3 by the
+   signs of a' . q; an open half-plane plus one edge q is, when a' . q =
+   0, itself (b' . q <= 0) or the plane, else (t = a' . g / a' . q >= 0
+   and b' . (g - t q) < 0) { g : -s a' . g <= 0, s c . g < 0 } with
+   s = sign(a' . q), c = (a' . q) b' - (b' . q) a'.  */
+static int
+plane_sum(wc_cone_t W, ws_struct * w, wc_error_t err)
+{
+    fmpz * a = w->G, * b = w->G + 3, * c = w->G + 6, * t = SCRATCH(w);
+    fmpz_t aq, bq;
+    slong i;
+    int pos = 0, neg = 0, sg, status;
+
+    for (i = 0; _fmpz_vec_is_zero(w->E + 3 * i, 3); i++)
+        ;
+    fmpz_mul(a + 0, w->mb, w->E + 3 * i);
+    fmpz_mul(a + 1, w->mb, w->E + 3 * i + 1);
+    fmpz_mul(a + 2, w->ma, w->E + 3 * i + 2);
+    if (w->ns == 0)
+    {
+        for (i = 0; i < w->nq; i++)
+        {
+            sg = dot_sgn(a, w->Q + 3 * i, t);
+            pos |= sg > 0;
+            neg |= sg < 0;
+        }
+        if (pos && neg)
+        {
+            _wc_cone3_set_space(W);
+            return WC_OK;
+        }
+        if (pos)
+            _fmpz_vec_neg(a, a, 3);
+        return set_rows(W, pos || neg ? NULL : a, pos || neg ? a : NULL,
+                        NULL, err);
+    }
+    fmpz_init(aq);
+    fmpz_init(bq);
+    fmpz_mul(b + 0, w->mb, w->S + 0);
+    fmpz_mul(b + 1, w->mb, w->S + 1);
+    fmpz_mul(b + 2, w->ma, w->S + 2);
+    _fmpz_vec_dot(aq, a, w->Q, 3);
+    _fmpz_vec_dot(bq, b, w->Q, 3);
+    if (fmpz_is_zero(aq))
+        status = set_rows(W, a, NULL, fmpz_sgn(bq) <= 0 ? b : NULL, err);
+    else
+    {
+        _fmpz_vec_scalar_mul_fmpz(c, b, 3, aq);
+        _fmpz_vec_scalar_submul_fmpz(c, a, 3, bq);
+        if (fmpz_sgn(aq) > 0)
+            _fmpz_vec_neg(a, a, 3);
+        else
+            _fmpz_vec_neg(c, c, 3);
+        status = set_rows(W, NULL, a, c, err);
+    }
+    fmpz_clear(aq);
+    fmpz_clear(bq);
+    return status;
+}
+
+/* The sign pattern of h . x over the k rows x of A: bit 1 for a positive
+   value, bit 2 for a negative one.  */
+static int
+signs(const fmpz * h, const fmpz * A, slong k, fmpz_t t)
+{
+    slong j;
+    int r = 0, sg;
+
+    for (j = 0; j < k && r != 3; j++)
+    {
+        sg = dot_sgn(h, A + 3 * j, t);
+        r |= sg > 0 ? 1 : sg < 0 ? 2 : 0;
+    }
+    return r;
+}
+
+/* W = span(y) + pos(A) (k rows of A, y among them), closed, when the fan
+   did not settle it.  Its facets lie on planes through y and a row x,
+   with normal h = y x x (when h . A has one sign); if every such h is
+   normal to all rows, W lies in the plane h . g = 0 and is bounded
+   there, if at all, by c = h x y.  k^2 sign tests: up to 32 rows, else
+   *done := 0.  */
+static int
+line_sum(wc_cone_t W, int * done, ws_struct * w, const fmpz * y, slong k,
+         wc_error_t err)
+{
+    fmpz * h, * a, * c, * H, * t = SCRATCH(w);
+    slong i, m = 0;
+    int sg, flat = 1, status = WC_OK;
+
+    if (k > 32)
+    {
+        *done = 0;
+        return WC_OK;
+    }
+    h = _fmpz_vec_init(3 * k + 9);
+    a = h + 3;
+    c = h + 6;
+    H = h + 9;
+    for (i = 0; i < k; i++)
+    {
+        _wc_zvec3_cross(h, y, w->G + 3 * i);
+        if (_fmpz_vec_is_zero(h, 3))
+            continue;
+        _fmpz_vec_set(a, h, 3);
+        sg = signs(h, w->G, k, t);
+        flat &= sg == 0;
+        if (sg == 1)
+            _fmpz_vec_neg(h, h, 3);
+        if (sg == 1 || sg == 2)
+            _fmpz_vec_set(H + 3 * m++, h, 3);
+    }
+    if (_fmpz_vec_is_zero(a, 3))
+        _wc_cone3_set_line(W, y);
+    else if (flat)
+    {
+        _wc_zvec3_cross(c, a, y);
+        sg = signs(c, w->G, k, t);
+        if (sg == 1)
+            _fmpz_vec_neg(c, c, 3);
+        status = set_rows(W, a, sg == 1 || sg == 2 ? c : NULL, NULL, err);
+    }
+    else if (m == 0)
+        _wc_cone3_set_space(W);
+    else
+    {
+        fmpq_mat_t A;
+
+        fmpq_mat_init(A, m, 3);
+        for (i = 0; i < 3 * m; i++)
+            fmpz_set(fmpq_mat_entry_num(A, i / 3, i % 3), H + i);
+        status = wc_cone_set_hrep(W, NULL, A, NULL, err);
+        fmpq_mat_clear(A);
+    }
+    _fmpz_vec_clear(h, 3 * k + 9);
+    return status;
+}
+
+/* W := the fan of the generators, or for a line V_x line_sum's
+   conversion; *done := 0 when neither settles it.  Returns WC_OK, or
+   WC_EINTERNAL (*err_set: err set, else out of memory).  */
+static int
+set_w(wc_cone_t W, int * done, int * err_set, ws_struct * w, int kind,
+      int apex, wc_error_t err)
 {
     _wc_fan3_t F;
     slong k;
     int r, status = WC_OK;
 
-    k = distinct(w->U, w->G, w->ng, w->idx);
+    k = _wc_zrows3_distinct(w->G, w->ng);
     if (k == 0)
     {
         _wc_cone3_set_origin(W);
@@ -479,38 +697,55 @@ set_w(wc_cone_t W, int * done, ws_struct * w, int kind, int apex)
     }
     if (k == 2 && kind == V_LINE)       /* M V_x, no friction edges */
     {
-        _wc_cone3_set_line(W, w->G);
+        _wc_cone3_set_line(W, Y(w));
         return WC_OK;
     }
-    _wc_fan3_init(F);
-    r = _wc_fan3(F, w->U, k);
-    if (r == WC_FAN3_NOMEM)
-        status = WC_EINTERNAL;
-    else if (r == WC_FAN3_POINTED)
-        status = _wc_cone3_set_fan(W, F, 0);
-    else if (r == WC_FAN3_SPACE)
+    /* A line and at most two edges: not R^3, not pointed.  For V_x the
+       origin or a line, the friction edges around the part often span
+       R^3: a certificate in O(k) sign tests spares the fan.  */
+    r = WC_FAN3_OTHER;
+    if ((kind == V_ORIGIN || (kind == V_LINE && k >= 5))
+        && _wc_zrows3_span_space(w->G, k))
+    {
         _wc_cone3_set_space(W);
-    else
+        return WC_OK;
+    }
+    if (kind != V_LINE || k >= 5)
+    {
+        _wc_fan3_init(F);
+        r = _wc_fan3(F, w->G, k);
+        if (r == WC_FAN3_NOMEM)
+            status = WC_EINTERNAL;
+        else if (r == WC_FAN3_POINTED)
+            status = _wc_cone3_set_fan(W, F, 0);
+        else if (r == WC_FAN3_SPACE)
+            _wc_cone3_set_space(W);
+        _wc_fan3_clear(F);
+    }
+    if (r == WC_FAN3_OTHER && kind == V_LINE)
+    {
+        *err_set = 1;
+        return line_sum(W, done, w, Y(w), k, err);
+    }
+    if (r == WC_FAN3_OTHER)
         *done = 0;
-    _wc_fan3_clear(F);
     if (status == WC_OK && *done && kind == V_RAY && !apex
-        && !faces_holding(W, w->G, SCRATCH(w)))
+        && !faces_holding(W, Y(w), SCRATCH(w)))
         status = WC_EINTERNAL;
     return status;
 }
 
-/* A := the rows x[0..k) (stride 3, or the pointers X when not NULL)
-   times M^-1, up to positive factors: (mb x0, mb x1, ma x2).  */
+/* A := the rows x[0..k) times M^-1, up to positive factors: (mb x0,
+   mb x1, ma x2).  */
 static void
-rows_times_minv(fmpq_mat_t A, const fmpz * x, const fmpz ** X, slong k,
-                const ws_struct * w)
+rows_times_minv(fmpq_mat_t A, const fmpz * x, slong k, const ws_struct * w)
 {
     slong i;
 
     fmpq_mat_init(A, k, 3);
     for (i = 0; i < k; i++)
     {
-        const fmpz * r = X != NULL ? X[i] : x + 3 * i;
+        const fmpz * r = x + 3 * i;
 
         fmpz_mul(fmpq_mat_entry_num(A, i, 0), w->mb, r + 0);
         fmpz_mul(fmpq_mat_entry_num(A, i, 1), w->mb, r + 1);
@@ -527,14 +762,59 @@ image_by_hrep(wc_cone_t W, const ws_struct * w, wc_error_t err)
     fmpq_mat_t E, H, S;
     int status;
 
-    rows_times_minv(E, NULL, w->E, w->ne, w);
-    rows_times_minv(H, w->H, NULL, w->nh, w);
-    rows_times_minv(S, w->S, NULL, w->ns, w);
+    rows_times_minv(E, w->E, w->ne, w);
+    rows_times_minv(H, w->H, w->nh, w);
+    rows_times_minv(S, w->S, w->ns, w);
     status = wc_cone_set_hrep(W, E, H, S, err);
     fmpq_mat_clear(E);
     fmpq_mat_clear(H);
     fmpq_mat_clear(S);
     return status;
+}
+
+/* From the letters alone: 0 when the fast path cannot answer (then
+   nothing is built); else 1 and the row counts, for the sizes.  */
+static int
+plan(ws_struct * w, const char * mode)
+{
+    slong i;
+
+    w->ne = w->nh = w->ns = w->nq = 0;
+    for (i = 0; i < w->n; i++)
+    {
+        char x = mode[i];
+
+        w->nh += x == 's';
+        w->ns += x == 'a' || x == 'l' || x == 'r';
+        w->ne += (x == 'l' || x == 'r' || x == 'm') + 2 * (x == 'n');
+        w->nq += (x == 'l' || x == 'r') + 2 * (x == 'n' || x == 'm');
+    }
+    /* Friction edges and one equality (rank at most 1) with rows other
+       than those V_PLANE takes: V_OTHER, left to the general route.  */
+    return w->nq == 0 || w->ne > 1
+        || (w->nh == 0 && (w->ns == 0 || (w->ns == 1 && w->nq == 1)));
+}
+
+/* The images of V_x's generators under M, then the friction edges, into
+   G; Y := the first image.  */
+static void
+generators(ws_struct * w, int kind, const fmpz * u, const _wc_fan3_t FV)
+{
+    slong i;
+
+    w->ng = 0;
+    if (kind == V_RAY || kind == V_LINE)
+        put_image(w, u, 1);
+    if (kind == V_LINE)
+        put_image(w, u, -1);
+    for (i = 0; kind == V_POLAR && i < FV->m; i++)
+        put_image(w, FV->facets + 3 * i, 1);
+    if (w->ng > 0)
+        _fmpz_vec_set(Y(w), w->G, 3);
+    /* The edges move down to follow the images (swaps, front first).  */
+    for (i = 0; w->ng < w->gi && i < 3 * w->nq; i++)
+        fmpz_swap(w->G + 3 * w->ng + i, w->Q + i);
+    w->ng += w->nq;
 }
 
 int
@@ -543,32 +823,29 @@ _wc_wrench_cone_direct3(wc_cone_t W, int * done, const wc_problem_t P,
 {
     ws_struct w;
     _wc_fan3_t FV;
-    slong n = P->n, i, len = 30 * n + 23;
-    fmpz * z = NULL, * u;
+    slong len;
+    fmpz * z, * u;
     int kind, apex, status = WC_OK, err_set = 0;
 
     *done = 0;
-    wc_cone_set_empty(W);
-    if (W->d != 3)
-        return WC_OK;
-    w.n = n;
-    w.E = malloc(sizeof(const fmpz *) * 2 * n);
-    w.idx = malloc(sizeof(slong) * (2 * n + 3));
-    if (w.E == NULL || w.idx == NULL)
+    w.n = P->n;
+    if (W->d != 3 || !plan(&w, mode))
     {
-        status = WC_EINTERNAL;
-        goto cleanup;
+        wc_cone_set_empty(W);
+        return WC_OK;
     }
+    /* V_POLAR's images and H's distinct rows need nh rows ahead of the
+       edges, a line's images 2, plane_sum's scratch 3.  */
+    w.gi = FLINT_MAX(w.nh, 3);
+    len = 3 * (w.ne + w.nh + w.ns + w.gi + w.nq) + 12;
     z = _fmpz_vec_init(len);
-    w.jn = z;
-    w.jt = w.jn + 3 * n;
-    w.H = w.jt + 3 * n;
-    w.S = w.H + 3 * n;
-    w.Q = w.S + 3 * n;
-    w.G = w.Q + 6 * n;
-    w.U = w.G + 3 * (2 * n + 2);
-    w.t = w.U + 3 * (2 * n + 2);
-    u = w.t + 8;
+    w.E = z;
+    w.H = w.E + 3 * w.ne;
+    w.S = w.H + 3 * w.nh;
+    w.G = w.S + 3 * w.ns;
+    w.Q = w.G + 3 * w.gi;
+    w.t = w.Q + 3 * w.nq;
+    u = w.t + 9;
     fmpz_init(w.ma);
     fmpz_init(w.mb);
     _wc_fan3_init(FV);
@@ -587,31 +864,29 @@ _wc_wrench_cone_direct3(wc_cone_t W, int * done, const wc_problem_t P,
         err_set = 1;
         goto finish;
     }
+    if (kind == V_PLANE)
+    {
+        *done = 1;
+        status = plane_sum(W, &w, err);
+        err_set = 1;
+        goto finish;
+    }
     if (kind < 0 || kind == V_OTHER)
         goto finish;
     *done = 1;
     if (kind == V_EMPTY)
+    {
+        wc_cone_set_empty(W);
         goto finish;
-    w.ng = 0;
-    if (kind == V_RAY || kind == V_LINE)
-        put_image(&w, u, 1);
-    if (kind == V_LINE)
-        put_image(&w, u, -1);
-    for (i = 0; kind == V_POLAR && i < FV->m; i++)
-        put_image(&w, FV->facets + 3 * i, 1);
-    _fmpz_vec_set(w.G + 3 * w.ng, w.Q, 3 * w.nq);
-    w.ng += w.nq;
-    status = set_w(W, done, &w, kind, apex);
+    }
+    generators(&w, kind, u, FV);
+    status = set_w(W, done, &err_set, &w, kind, apex, err);
 
 finish:
     fmpz_clear(w.ma);
     fmpz_clear(w.mb);
     _wc_fan3_clear(FV);
-cleanup:
-    if (z != NULL)
-        _fmpz_vec_clear(z, len);
-    free(w.E);
-    free(w.idx);
+    _fmpz_vec_clear(z, len);
     if (status != WC_OK)
     {
         *done = 1;

@@ -11,9 +11,11 @@
    instead and goes straight to the 3-D fan (fan3.h) when V_x is the
    origin, a ray or a line (equalities of rank 2 or 3) or, with no
    equalities and no strict rows, a pointed cone or the normal line of a
-   plane its rows fill; without friction edges it converts M V_x from one
-   H-representation.  It gives up on every other case, and the general
-   route answers.  Both give the same canonical cone (tests/t-direct3.c
+   plane its rows fill; V_x a plane, or an open half-plane with one
+   friction edge, and a line whose sum with the edges is not pointed, by
+   an H-representation of W written directly; without friction edges it
+   converts M V_x from one H-representation.  It gives up on every other
+   case, and the general route answers.  Both give the same canonical cone (tests/t-direct3.c
    checks it on random and degenerate problems).  */
 
 #ifndef WC_ANALYSIS_DIRECT3_H

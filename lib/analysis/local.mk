@@ -6,6 +6,7 @@ lib_libwc_la_SOURCES += \
 	lib/analysis/wrench.c \
 	lib/analysis/direct.c \
 	lib/analysis/direct3.c \
+	lib/analysis/zrows3.c \
 	lib/analysis/paper.c \
 	lib/analysis/trace.c \
 	lib/analysis/kinematics.c \
@@ -34,6 +35,7 @@ wcanalysis_HEADERS = \
 	lib/analysis/plan.h
 noinst_HEADERS += \
 	lib/analysis/direct3.h \
+	lib/analysis/zrows3.h \
 	lib/analysis/planparts.h \
 	lib/analysis/modeswalk.h \
 	lib/analysis/stabmodel.h \
