@@ -35,20 +35,6 @@
 #include "analysis/direct3.h"
 #include "exact/cone3.h"
 
-static char *
-json_of(const wc_cone_t W)
-{
-    char * buf = NULL;
-    size_t len = 0;
-    FILE * f = open_memstream(&buf, &len);
-
-    if (f == NULL)
-        wctest_fail("open_memstream failed");
-    wc_cone_fprint_json(f, W);
-    fclose(f);
-    return buf;
-}
-
 /* Compare the three answers for P and mode; returns whether the fast
    path answered.  */
 static int
@@ -84,8 +70,8 @@ check(const wc_problem_t P, const char * mode)
         if (!done && !A->empty)
             wctest_fail_problem(P, mode, "the fast path gave up but left "
                                 "a nonempty cone");
-        ja = json_of(C);
-        jb = json_of(B);
+        ja = wctest_cone_json(C);
+        jb = wctest_cone_json(B);
         if (strcmp(ja, jb) != 0)
             wctest_fail_problem(P, mode, "JSON differs:\n%s\n%s", ja, jb);
         free(ja);
@@ -314,7 +300,7 @@ check_line(void)
         wctest_fail("wc_cone_set_generators: %s", err->message);
     if (!wc_cone_equal(A, B))
     {
-        char * ja = json_of(A), * jb = json_of(B);
+        char * ja = wctest_cone_json(A), * jb = wctest_cone_json(B);
 
         wctest_fail("the line (%ld, %ld, %ld):\n%s\n%s",
                     (long) fmpz_get_si(v + 0), (long) fmpz_get_si(v + 1),
