@@ -21,8 +21,9 @@
    for the modes of s letters around the part) is compared with the
    general conversion of that line.  A quarter of the problems get
    numbers past a word (big_numbers), for the fmpz side of every 128-bit
-   shortcut in direct3.c.  The fast path must answer for at least a quarter of the cones
-   (it answers about half of them) or the test fails.  */
+   shortcut in direct3.c.  The fast path must answer for at least a
+   quarter of the cones (it answers about half of them) or the test
+   fails.  */
 
 #include <config.h>
 
