@@ -52,26 +52,41 @@ typedef __int128 wide;
 
 /* ---------------------------------------------------------------------
    The cell list under construction.  Signs are kept as keys: sign + 1
-   in a byte, so that memcmp orders them - < 0 < +.  The key of the
-   current face and its hash are kept up to date from the planes the walk
-   says have changed: the hash is the XOR of one random word per plane
-   and key byte (Zobrist hashing), so a face costs O(changed) before its
-   lookup, and a chamber met again one comparison of its key.  */
+   in two bits per plane, KEY_PLANES planes to a 64-bit word, the first
+   plane in the highest bits, so that comparing the words as unsigned
+   integers orders keys as their sign vectors (- < 0 < +).  The key of
+   the current face and its hash are kept up to date from the planes the
+   walk says have changed: the hash is the XOR of one random word per
+   plane and sign (Zobrist hashing), so a face costs O(changed) before
+   its lookup, and a chamber met again one comparison of its key.  The
+   keys take a quarter of the bytes of the sign vectors; these are
+   written once, in the sorted order, at the end.  */
+
+#define KEY_PLANES 32
+#define KEY_SHIFT(q) (62 - 2 * ((q) % KEY_PLANES))
+
+/* The sign + 1 of plane q in key k.  */
+static inline unsigned int
+key_get(const uint64_t * k, slong q)
+{
+    return (unsigned int) (k[q / KEY_PLANES] >> KEY_SHIFT(q)) & 3;
+}
 
 typedef struct
 {
     slong m;                /* planes */
+    slong kw;               /* words per key */
     slong cap;              /* cells expected */
     slong count;
-    unsigned char * key;    /* cap x m */
+    uint64_t * key;         /* cap x kw */
     uint64_t * hash;        /* cap */
     fmpz * pt;              /* cap x 3 */
     slong * dim;            /* cap */
     slong size;             /* hash table slots, a power of two */
     slong * slot;
-    unsigned char * cur;    /* m: the current face's key */
+    uint64_t * cur;         /* kw: the current face's key */
     uint64_t curhash;
-    uint64_t * zob;         /* 3 m: the word of plane q and key byte b at
+    uint64_t * zob;         /* 3 m: the word of plane q and sign + 1 b at
                                3 q + b */
 }
 cell_list;
@@ -82,15 +97,16 @@ cell_list_init(cell_list * L, slong m, slong cap)
     slong i;
 
     L->m = m;
+    L->kw = (m + KEY_PLANES - 1) / KEY_PLANES;
     L->cap = cap;
     L->count = 0;
-    L->key = malloc((size_t) cap * m + 1);
+    L->key = malloc(sizeof(uint64_t) * ((size_t) cap * L->kw + 1));
     L->hash = flint_malloc(sizeof(uint64_t) * (cap + 1));
     L->pt = _fmpz_vec_init(3 * (cap + 1));
     L->dim = flint_malloc(sizeof(slong) * (cap + 1));
     L->size = _wc_hash_size(2 * cap + 2);
     L->slot = flint_malloc(sizeof(slong) * L->size);
-    L->cur = flint_malloc(m + 1);
+    L->cur = flint_malloc(sizeof(uint64_t) * (L->kw + 1));
     L->zob = flint_malloc(sizeof(uint64_t) * (3 * m + 1));
     if (L->key == NULL || L->hash == NULL || L->dim == NULL
         || L->slot == NULL || L->cur == NULL || L->zob == NULL)
@@ -100,9 +116,10 @@ cell_list_init(cell_list * L, slong m, slong cap)
     L->curhash = 0;
     for (i = 0; i < 3 * m; i++)
         L->zob[i] = _wc_hash_mix64(UINT64_C(0x9e3779b97f4a7c15) * (i + 1));
+    memset(L->cur, 0, sizeof(uint64_t) * L->kw);
     for (i = 0; i < m; i++)
     {
-        L->cur[i] = 1;
+        L->cur[i / KEY_PLANES] |= UINT64_C(1) << KEY_SHIFT(i);
         L->curhash ^= L->zob[3 * i + 1];
     }
     return 1;
@@ -129,10 +146,11 @@ cell_list_update(cell_list * L, const _wc_face_struct * F)
     for (i = 0; i < F->nchanged; i++)
     {
         slong q = F->changed[i];
-        unsigned char b = (unsigned char) (F->sign[q] + 1);
+        uint64_t b = (uint64_t) (F->sign[q] + 1);
+        uint64_t * w = L->cur + q / KEY_PLANES;
 
-        L->curhash ^= L->zob[3 * q + L->cur[q]] ^ L->zob[3 * q + b];
-        L->cur[q] = b;
+        L->curhash ^= L->zob[3 * q + key_get(L->cur, q)] ^ L->zob[3 * q + b];
+        *w = (*w & ~(UINT64_C(3) << KEY_SHIFT(q))) | (b << KEY_SHIFT(q));
     }
 }
 
@@ -143,8 +161,8 @@ cell_list_update(cell_list * L, const _wc_face_struct * F)
 static slong
 cell_list_add(cell_list * L, slong d, slong * at)
 {
-    slong m = L->m, c = L->count, i;
-    const unsigned char * k = L->cur;
+    slong kw = L->kw, c = L->count, i, j;
+    const uint64_t * k = L->cur;
     uint64_t h = L->curhash;
 
     for (i = (slong) (h & (L->size - 1)); L->slot[i] >= 0;
@@ -152,12 +170,19 @@ cell_list_add(cell_list * L, slong d, slong * at)
     {
         slong o = L->slot[i];
 
-        if (L->hash[o] == h && memcmp(L->key + o * m, k, m) == 0)
-            return o;
+        if (L->hash[o] == h)
+        {
+            const uint64_t * ko = L->key + o * kw;
+
+            for (j = 0; j < kw && ko[j] == k[j]; j++)
+                ;
+            if (j == kw)
+                return o;
+        }
     }
     if (c >= L->cap)
         return -2;
-    memcpy(L->key + c * m, k, m);
+    memcpy(L->key + c * kw, k, sizeof(uint64_t) * kw);
     L->slot[i] = c;
     L->hash[c] = h;
     L->dim[c] = d;
@@ -240,7 +265,7 @@ collect_clear(collect * C)
 /* chamber_multiplier in 128-bit words: h64 set, mid's entries words.  */
 static int
 multiplier_wide(collect * C, slong p, const fmpz * mid,
-                const unsigned char * seckey)
+                const uint64_t * seckey)
 {
     const slong * h = C->h64;
     slong m = C->L->m, q;
@@ -251,7 +276,7 @@ multiplier_wide(collect * C, slong p, const fmpz * mid,
         wide d = h[3 * q] * x + h[3 * q + 1] * y + h[3 * q + 2] * z;
         wide e = C->hh128[q];
 
-        if ((d > 0) - (d < 0) + 1 != seckey[q])
+        if ((unsigned int) ((d > 0) - (d < 0) + 1) != key_get(seckey, q))
             return 0;
         d = d < 0 ? -d : d;
         e = e < 0 ? -e : e;
@@ -271,7 +296,7 @@ multiplier_wide(collect * C, slong p, const fmpz * mid,
    for every q != p.  Returns 0 on a mismatch.  */
 static int
 chamber_multiplier(collect * C, slong p, const fmpz * mid,
-                   const unsigned char * seckey)
+                   const uint64_t * seckey)
 {
     slong m = C->L->m, q;
 
@@ -299,7 +324,7 @@ chamber_multiplier(collect * C, slong p, const fmpz * mid,
     {
         int s = _wc_zvec3_dot_sgn(WC_ROW(C->H, q), mid, C->a);
 
-        if (s + 1 != seckey[q])
+        if ((unsigned int) (s + 1) != key_get(seckey, q))
             return 0;
         /* a quotient below 1 cannot raise k: no division */
         if (q == p || fmpz_is_zero(C->hh + q)
@@ -323,7 +348,7 @@ chamber_point(fmpz * pc, collect * C, const _wc_face_struct * F,
     if (!C->have_k)
     {
         if (!chamber_multiplier(C, F->plane, F->point,
-                                C->L->key + C->sec * C->L->m))
+                                C->L->key + C->sec * C->L->kw))
             return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                 "internal error: cells: the signs of a "
                                 "sector are wrong");
@@ -446,7 +471,7 @@ collect_planes(fmpz_mat_t H, const fmpz_mat_t N)
 
 typedef struct
 {
-    const unsigned char * key;
+    const uint64_t * key;
     slong len;
     slong dim;
     slong i;
@@ -458,62 +483,53 @@ static int
 key_ref_cmp(const void * p, const void * q)
 {
     const key_ref * a = p, * b = q;
+    slong j;
 
     if (a->dim != b->dim)
         return a->dim < b->dim ? -1 : 1;
-    return memcmp(a->key, b->key, a->len);
+    for (j = 0; j < a->len; j++)
+        if (a->key[j] != b->key[j])
+            return a->key[j] < b->key[j] ? -1 : 1;
+    return 0;
 }
 
-/* Put the rows (m bytes each) of key into the order perm (row i
-   becomes the old row perm[i]), in place, with one spare row; perm is
-   used up (every entry set to -1).  */
+/* sign[0 .. m) := the signs of key k.  */
 static void
-permute_rows(unsigned char * key, slong m, slong * perm, slong n,
-             unsigned char * spare)
+key_unpack(signed char * sign, const uint64_t * k, slong m)
 {
-    slong i, j, k;
+    slong q, j;
 
-    for (i = 0; i < n; i++)
+    for (q = 0; q < m; q += KEY_PLANES)
     {
-        if (perm[i] < 0 || perm[i] == i)
-        {
-            perm[i] = -1;
-            continue;
-        }
-        /* the cycle i <- perm[i] <- perm[perm[i]] ... */
-        memcpy(spare, key + i * m, m);
-        for (j = i; perm[j] != i; j = k)
-        {
-            k = perm[j];
-            memcpy(key + j * m, key + k * m, m);
-            perm[j] = -1;
-        }
-        memcpy(key + j * m, spare, m);
-        perm[j] = -1;
+        uint64_t w = k[q / KEY_PLANES];
+        slong n = FLINT_MIN(KEY_PLANES, m - q);
+
+        for (j = 0; j < n; j++, w <<= 2)
+            sign[q + j] = (signed char) ((int) (w >> 62) - 1);
     }
 }
 
-/* A := the cells of L on the planes H (taken), sorted; L's keys become
-   A's signs.  Returns 0 when out of memory.  */
+/* A := the cells of L on the planes H (taken), sorted; A's signs are
+   L's keys unpacked in that order.  Returns 0 when out of memory.  */
 static int
 cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
 {
     slong m = L->m, total = L->count, i;
     key_ref * ref = flint_malloc(sizeof(key_ref) * (total + 1));
-    slong * perm = flint_malloc(sizeof(slong) * (total + 1));
-    unsigned char * spare = flint_malloc(m + 1);
+    signed char * sign = malloc((size_t) total * m + 1);
+    slong * dim = flint_malloc(sizeof(slong) * (total + 1));
 
-    if (ref == NULL || perm == NULL || spare == NULL)
+    if (ref == NULL || sign == NULL || dim == NULL)
     {
         flint_free(ref);
-        flint_free(perm);
-        flint_free(spare);
+        free(sign);
+        flint_free(dim);
         return 0;
     }
     for (i = 0; i < total; i++)
     {
-        ref[i].key = L->key + i * m;
-        ref[i].len = m;
+        ref[i].key = L->key + i * L->kw;
+        ref[i].len = L->kw;
         ref[i].dim = L->dim[i];
         ref[i].i = i;
     }
@@ -523,23 +539,17 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
     A->count = total;
     fmpz_mat_clear(A->point);
     fmpz_mat_init(A->point, total, 3);
-    A->dim = flint_malloc(sizeof(slong) * (total + 1));
     for (i = 0; i < total; i++)
     {
         slong c = ref[i].i;
 
         _fmpz_vec_swap(WC_ROW(A->point, i), L->pt + 3 * c, 3);
-        A->dim[i] = L->dim[c];
-        perm[i] = c;
+        dim[i] = L->dim[c];
+        key_unpack(sign + i * m, ref[i].key, m);
     }
+    A->dim = dim;
+    A->sign = sign;
     flint_free(ref);
-    permute_rows(L->key, m, perm, total, spare);
-    for (i = 0; i < total * m; i++)
-        L->key[i]--;
-    A->sign = (signed char *) L->key;
-    L->key = NULL;
-    flint_free(perm);
-    flint_free(spare);
     return 1;
 }
 
