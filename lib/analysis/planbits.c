@@ -166,41 +166,42 @@ face_facets(ulong * tab, slong fw, const wc_cone_key * K)
 /* out |= the cells of cand (in the closure of K's cone) whose face is
    included: the face holding a point of the closure is the one whose
    facets are exactly those the point lies on (wc_cone_locate finds the
-   same face by its rays).  Returns 0 when out of memory.  */
+   same face by its rays); the first such face in K's list decides.  A
+   word of cells at a time: the cells of face f are those on each of its
+   facets (sign 0) and off every other, a few ANDs of the planes' zero
+   bitsets.  Returns 0 when out of memory.  */
 static int
 by_faces(ulong * out, const ulong * cand, const wc_cone_key * K,
-         wc_cell_bits * X, const wc_cells_t A)
+         wc_cell_bits * X)
 {
-    slong fw = K->nf / FLINT_BITS + 1, nfaces = K->C->nfaces, w, j, f;
-    ulong * tab = malloc(sizeof(ulong) * (fw * (nfaces + 1) + 1));
-    ulong * tight;
+    slong fw = K->nf / FLINT_BITS + 1, nfaces = K->C->nfaces, nf = K->nf;
+    slong w, j, f;
+    ulong * tab = malloc(sizeof(ulong) * (fw * (nfaces + 1) + nf + 1));
+    ulong * z;
 
     if (tab == NULL)
         return 0;
     face_facets(tab, fw, K);
-    tight = tab + fw * nfaces;
+    z = tab + fw * nfaces;
     for (w = 0; w < X->words; w++)
     {
-        ulong x;
+        ulong left = cand[w];
 
-        for (x = cand[w]; x != 0; x &= x - 1)
+        if (left == 0)
+            continue;
+        for (j = 0; j < nf; j++)
+            z[j] = BITS(X, K->plane[j], 0)[w];
+        for (f = 0; f < nfaces && left != 0; f++)
         {
-            slong i = w * FLINT_BITS + _wc_plan_ctz(x);
-            const signed char * s = A->sign + i * A->nplanes;
+            const ulong * t = tab + f * fw;
+            ulong x = left;
 
-            memset(tight, 0, sizeof(ulong) * fw);
-            for (j = 0; j < K->nf; j++)
-                if (s[K->plane[j]] == 0)
-                    tight[j / FLINT_BITS] |= UWORD(1) << (j % FLINT_BITS);
-            for (f = 0; f < nfaces; f++)
-            {
-                for (j = 0; j < fw && tab[f * fw + j] == tight[j]; j++)
-                    ;
-                if (j == fw)
-                    break;
-            }
-            if (f < nfaces && K->C->faces[f].included)
-                out[w] |= UWORD(1) << (i % FLINT_BITS);
+            for (j = 0; j < nf && x != 0; j++)
+                x &= ((t[j / FLINT_BITS] >> (j % FLINT_BITS)) & 1)
+                    ? z[j] : ~z[j];
+            left &= ~x;
+            if (K->C->faces[f].included)
+                out[w] |= x;
         }
     }
     free(tab);
@@ -237,7 +238,7 @@ _wc_cone_key_cells(ulong * out, const wc_cone_key * K, wc_cell_bits * X,
             out[w] = X->strict[w];
         X->cand[w] &= ~X->strict[w];
     }
-    if (!by_faces(out, X->cand, K, X, A))
+    if (!by_faces(out, X->cand, K, X))
         by_lattice(out, X->cand, K, X, A);
 }
 

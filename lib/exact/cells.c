@@ -34,6 +34,10 @@
 
 #include <flint/fmpz_vec.h>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 #include "exact/vec3.h"
 #include "exact/hash.h"
 #include "exact/zvec3set.h"
@@ -493,20 +497,59 @@ key_ref_cmp(const void * p, const void * q)
     return 0;
 }
 
-/* sign[0 .. m) := the signs of key k.  */
+/* The signs of four planes, a byte of a key, as four sign bytes.  */
 static void
-key_unpack(signed char * sign, const uint64_t * k, slong m)
+unpack_table(uint32_t * tab)
+{
+    unsigned int b, j;
+
+    for (b = 0; b < 256; b++)
+    {
+        unsigned char c[4];
+
+        for (j = 0; j < 4; j++)
+            c[j] = (unsigned char) (((b >> (6 - 2 * j)) & 3) - 1);
+        memcpy(tab + b, c, 4);
+    }
+}
+
+/* sign[0 .. m) := the signs of key k (tab from unpack_table).  */
+static void
+key_unpack(signed char * sign, const uint64_t * k, slong m,
+           const uint32_t * tab)
 {
     slong q, j;
 
-    for (q = 0; q < m; q += KEY_PLANES)
+    for (q = 0; q + 4 <= m; q += 4)
     {
-        uint64_t w = k[q / KEY_PLANES];
-        slong n = FLINT_MIN(KEY_PLANES, m - q);
-
-        for (j = 0; j < n; j++, w <<= 2)
-            sign[q + j] = (signed char) ((int) (w >> 62) - 1);
+        j = q % KEY_PLANES;
+        memcpy(sign + q, tab + ((k[q / KEY_PLANES] >> (56 - 2 * j)) & 255),
+               4);
     }
+    for (; q < m; q++)
+        sign[q] = (signed char) ((int) key_get(k, q) - 1);
+}
+
+/* A large table of n bytes (free it with free()): on Linux, in huge
+   pages when the kernel has them, as writing it the first time costs a
+   page fault per page.  */
+static void *
+big_malloc(size_t n)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    size_t huge = (size_t) 1 << 21;
+    void * p = NULL;
+
+    if (n >= 4 * huge)
+    {
+        n = (n + huge - 1) / huge * huge;
+        if (posix_memalign(&p, huge, n) != 0)
+            return NULL;
+        madvise(p, n, MADV_HUGEPAGE);   /* advice: may fail */
+        return p;
+    }
+#endif
+    return malloc(n);
 }
 
 /* A := the cells of L on the planes H (taken), sorted; A's signs are
@@ -516,8 +559,9 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
 {
     slong m = L->m, total = L->count, i;
     key_ref * ref = flint_malloc(sizeof(key_ref) * (total + 1));
-    signed char * sign = malloc((size_t) total * m + 1);
+    signed char * sign = big_malloc((size_t) total * m + 1);
     slong * dim = flint_malloc(sizeof(slong) * (total + 1));
+    uint32_t tab[256];
 
     if (ref == NULL || sign == NULL || dim == NULL)
     {
@@ -534,6 +578,7 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
         ref[i].i = i;
     }
     qsort(ref, total, sizeof(key_ref), key_ref_cmp);
+    unpack_table(tab);
     A->nplanes = m;
     fmpz_mat_swap(A->planes, H);
     A->count = total;
@@ -545,7 +590,7 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
 
         _fmpz_vec_swap(WC_ROW(A->point, i), L->pt + 3 * c, 3);
         dim[i] = L->dim[c];
-        key_unpack(sign + i * m, ref[i].key, m);
+        key_unpack(sign + i * m, ref[i].key, m, tab);
     }
     A->dim = dim;
     A->sign = sign;
