@@ -25,6 +25,63 @@
 
 #define BITS(X, p, s) ((X)->bits + (3 * (p) + (s) + 1) * (X)->words)
 
+#if FLINT_BITS == 64 && defined(__BYTE_ORDER__) \
+    && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#define FAST_BITS 1
+
+/* A[j] bit i := A[i] bit j, a 64 x 64 bit matrix in place: six rounds
+   of swapping blocks of bits across the diagonal.  */
+static void
+transpose64(ulong * A)
+{
+    ulong m = UWORD(0x00000000FFFFFFFF), t;
+    slong j, k;
+
+    for (j = 32; j != 0; j >>= 1, m ^= m << j)
+        for (k = 0; k < 64; k = ((k | j) + 1) & ~j)
+        {
+            t = ((A[k] >> j) ^ A[k | j]) & m;
+            A[k] ^= t << j;
+            A[k | j] ^= t;
+        }
+}
+
+/* neg, pos := the planes p0 .. p0 + np0 (at most 64) where the n (at most
+   64) rows of signs from s (np bytes apart) are - and +, transposed: bit
+   i of neg[j] for row i and plane p0 + j.  Eight signs at a time: the
+   sign bit and the low bit of each byte, gathered by a multiplication
+   (byte k's low bit to bit 56 + k).  */
+static void
+block_bits(ulong * neg, ulong * pos, const signed char * s, slong np,
+           slong n, slong np0)
+{
+    const ulong lo = UWORD(0x0101010101010101);
+    const ulong gather = UWORD(0x0102040810204080);
+    slong i, t;
+
+    for (i = 0; i < 64; i++)
+    {
+        ulong rn = 0, rp = 0;
+
+        for (t = 0; t < np0 && i < n; t += 8)
+        {
+            ulong v = 0, vn;
+
+            memcpy(&v, s + i * np + t, FLINT_MIN(8, np0 - t));
+            vn = (v >> 7) & lo;
+            rn |= ((vn * gather) >> 56) << t;
+            rp |= (((v & lo & ~vn) * gather) >> 56) << t;
+        }
+        neg[i] = rn;
+        pos[i] = rp;
+    }
+    transpose64(neg);
+    transpose64(pos);
+}
+#else
+#define FAST_BITS 0
+#endif
+
 int
 _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
 {
@@ -45,7 +102,25 @@ _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
     for (w = 0; w < X->words; w++)
     {
         slong lo = w * FLINT_BITS, n = FLINT_MIN(A->count - lo, FLINT_BITS);
+        /* n < FLINT_BITS only in the last word */
+        ulong valid = n == FLINT_BITS ? ~UWORD(0) : (UWORD(1) << n) - 1;
+#if FAST_BITS
+        ulong neg[64], pos[64];
 
+        for (p = 0; p < np; p += 64)
+        {
+            slong np0 = FLINT_MIN(64, np - p), j;
+
+            block_bits(neg, pos, A->sign + lo * np + p, np, n, np0);
+            for (j = 0; j < np0; j++)
+            {
+                BITS(X, p + j, -1)[w] = neg[j];
+                BITS(X, p + j, 1)[w] = pos[j];
+                BITS(X, p + j, 0)[w] = ~(neg[j] | pos[j]) & valid;
+            }
+        }
+        (void) i;
+#else
         for (p = 0; p < np; p++)
         {
             const signed char * s = A->sign + lo * np + p;
@@ -58,10 +133,9 @@ _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
             }
             BITS(X, p, -1)[w] = neg;
             BITS(X, p, 1)[w] = pos;
-            /* n < FLINT_BITS only in the last word */
-            BITS(X, p, 0)[w] = ~(neg | pos)
-                & (n == FLINT_BITS ? ~UWORD(0) : (UWORD(1) << n) - 1);
+            BITS(X, p, 0)[w] = ~(neg | pos) & valid;
         }
+#endif
     }
     return 1;
 }

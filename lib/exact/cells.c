@@ -34,10 +34,6 @@
 
 #include <flint/fmpz_vec.h>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 #include "exact/vec3.h"
 #include "exact/hash.h"
 #include "exact/zvec3set.h"
@@ -530,28 +526,6 @@ key_unpack(signed char * sign, const uint64_t * k, slong m,
         sign[q] = (signed char) ((int) key_get(k, q) - 1);
 }
 
-/* A large table of n bytes (free it with free()): on Linux, in huge
-   pages when the kernel has them, as writing it the first time costs a
-   page fault per page.  */
-static void *
-big_malloc(size_t n)
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    size_t huge = (size_t) 1 << 21;
-    void * p = NULL;
-
-    if (n >= 4 * huge)
-    {
-        n = (n + huge - 1) / huge * huge;
-        if (posix_memalign(&p, huge, n) != 0)
-            return NULL;
-        madvise(p, n, MADV_HUGEPAGE);   /* advice: may fail */
-        return p;
-    }
-#endif
-    return malloc(n);
-}
-
 /* A := the cells of L on the planes H (taken), sorted; A's signs are
    L's keys unpacked in that order.  Returns 0 when out of memory.  */
 static int
@@ -559,7 +533,7 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
 {
     slong m = L->m, total = L->count, i;
     key_ref * ref = flint_malloc(sizeof(key_ref) * (total + 1));
-    signed char * sign = big_malloc((size_t) total * m + 1);
+    signed char * sign = malloc((size_t) total * m + 1);
     slong * dim = flint_malloc(sizeof(slong) * (total + 1));
     uint32_t tab[256];
 
