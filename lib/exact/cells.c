@@ -469,28 +469,63 @@ collect_planes(fmpz_mat_t H, const fmpz_mat_t N)
     _fmpz_vec_clear(v, 3 * (n + 3));
 }
 
+/* A cell to sort: the first word of its key and its index.  */
 typedef struct
 {
-    const uint64_t * key;
-    slong len;
-    slong dim;
+    uint64_t k0;
     slong i;
 }
 key_ref;
 
-/* Cells by dimension, then by key.  */
-static int
-key_ref_cmp(const void * p, const void * q)
+/* a < b for the keys (kw words each, from key) of two cells.  */
+static inline int
+key_ref_less(const key_ref * a, const key_ref * b, const uint64_t * key,
+             slong kw)
 {
-    const key_ref * a = p, * b = q;
+    const uint64_t * x, * y;
     slong j;
 
-    if (a->dim != b->dim)
-        return a->dim < b->dim ? -1 : 1;
-    for (j = 0; j < a->len; j++)
-        if (a->key[j] != b->key[j])
-            return a->key[j] < b->key[j] ? -1 : 1;
-    return 0;
+    if (a->k0 != b->k0)
+        return a->k0 < b->k0;
+    x = key + a->i * kw;
+    y = key + b->i * kw;
+    for (j = 1; j < kw && x[j] == y[j]; j++)
+        ;
+    return j < kw && x[j] < y[j];
+}
+
+/* Sort r[0 .. n) by key (all keys distinct), with n entries of scratch
+   tmp: a merge sort, runs of 2^k doubling.  Returns the array holding
+   the result (r or tmp).  */
+static key_ref *
+key_sort(key_ref * r, key_ref * tmp, slong n, const uint64_t * key,
+         slong kw)
+{
+    slong run, lo;
+
+    for (run = 1; run < n; run *= 2)
+    {
+        for (lo = 0; lo < n; lo += 2 * run)
+        {
+            slong mid = FLINT_MIN(lo + run, n), hi = FLINT_MIN(lo + 2 * run, n);
+            slong i = lo, j = mid, o = lo;
+
+            while (i < mid && j < hi)
+                tmp[o++] = key_ref_less(r + j, r + i, key, kw) ? r[j++]
+                    : r[i++];
+            while (i < mid)
+                tmp[o++] = r[i++];
+            while (j < hi)
+                tmp[o++] = r[j++];
+        }
+        {
+            key_ref * t = r;
+
+            r = tmp;
+            tmp = t;
+        }
+    }
+    return r;
 }
 
 /* The signs of four planes, a byte of a key, as four sign bytes.  */
@@ -526,13 +561,14 @@ key_unpack(signed char * sign, const uint64_t * k, slong m,
         sign[q] = (signed char) ((int) key_get(k, q) - 1);
 }
 
-/* A := the cells of L on the planes H (taken), sorted; A's signs are
-   L's keys unpacked in that order.  Returns 0 when out of memory.  */
+/* A := the cells of L on the planes H (taken), sorted by dimension
+   (bucketed), then by key; A's signs are L's keys unpacked in that
+   order.  Returns 0 when out of memory.  */
 static int
 cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
 {
-    slong m = L->m, total = L->count, i;
-    key_ref * ref = flint_malloc(sizeof(key_ref) * (total + 1));
+    slong m = L->m, kw = L->kw, total = L->count, i, d, start[5] = {0};
+    key_ref * ref = flint_malloc(sizeof(key_ref) * (2 * total + 1));
     signed char * sign = malloc((size_t) total * m + 1);
     slong * dim = flint_malloc(sizeof(slong) * (total + 1));
     uint32_t tab[256];
@@ -545,26 +581,36 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
         return 0;
     }
     for (i = 0; i < total; i++)
+        start[L->dim[i] + 1]++;
+    for (d = 0; d < 4; d++)
+        start[d + 1] += start[d];
+    for (i = 0; i < total; i++)
     {
-        ref[i].key = L->key + i * L->kw;
-        ref[i].len = L->kw;
-        ref[i].dim = L->dim[i];
-        ref[i].i = i;
+        key_ref * r = ref + start[L->dim[i]]++;
+
+        r->k0 = L->key[i * kw];
+        r->i = i;
     }
-    qsort(ref, total, sizeof(key_ref), key_ref_cmp);
     unpack_table(tab);
     A->nplanes = m;
     fmpz_mat_swap(A->planes, H);
     A->count = total;
     fmpz_mat_clear(A->point);
     fmpz_mat_init(A->point, total, 3);
-    for (i = 0; i < total; i++)
+    for (d = 0, i = 0; d < 4; d++)
     {
-        slong c = ref[i].i;
+        /* start[d] is now the end of dimension d's cells */
+        slong lo = d == 0 ? 0 : start[d - 1], n = start[d] - lo, j;
+        key_ref * r = key_sort(ref + lo, ref + total + lo, n, L->key, kw);
 
-        _fmpz_vec_swap(WC_ROW(A->point, i), L->pt + 3 * c, 3);
-        dim[i] = L->dim[c];
-        key_unpack(sign + i * m, ref[i].key, m, tab);
+        for (j = 0; j < n; j++, i++)
+        {
+            slong c = r[j].i;
+
+            _fmpz_vec_swap(WC_ROW(A->point, i), L->pt + 3 * c, 3);
+            dim[i] = d;
+            key_unpack(sign + i * m, L->key + c * kw, m, tab);
+        }
     }
     A->dim = dim;
     A->sign = sign;
