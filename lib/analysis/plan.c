@@ -258,17 +258,36 @@ needed_members(members * M, wc_plan_t R)
     return ok;
 }
 
-/* Is every cell of M->buf held by another kept cone?  */
+/* Remove the cone M->buf from the counts when every cell of it is held
+   by another kept cone, and return 1; else leave the counts and return
+   0.  One pass: each word is tested (count at least 2, the levels from
+   1 up until they hold the word's cells), then taken off; a cone that is
+   not covered (rare: redundant cones are most) is added back.  */
 static int
-members_covered(const members * M)
+members_take(members * M)
 {
     slong w;
+    int covered = 1;
 
     for (w = 0; w < M->words; w++)
-        if (M->buf[w] != 0
-            && (M->buf[w] & ~members_at_least(M, w, 1)) != 0)
-            return 0;
-    return 1;
+    {
+        ulong x = M->buf[w], r = 0;
+        const ulong * c = M->ctr + w * M->levels;
+        slong b;
+
+        if (x == 0)
+            continue;
+        for (b = 1; covered && b < M->levels && (x & ~r) != 0; b++)
+            r |= c[b];
+        if ((x & ~r) != 0)
+            covered = 0;
+        members_count(M, w, x, -1);
+    }
+    if (!covered)
+        for (w = 0; w < M->words; w++)
+            if (M->buf[w] != 0)
+                members_count(M, w, M->buf[w], 1);
+    return covered;
 }
 
 /* Membership of every cell in every needed cone: goal[i] (malloc'd into
@@ -277,7 +296,7 @@ members_covered(const members * M)
 static int
 plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
 {
-    slong nn = R->T->nneeded, ncells = R->cells->count, i, k, w;
+    slong nn = R->T->nneeded, ncells = R->cells->count, i, k;
     int * goal = *goalp = malloc(sizeof(int) * (ncells + 1));
     members M;
     int status = WC_OK;
@@ -304,17 +323,9 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
     R->nexact = nn;
     for (k = 0; k < nn; k++)
     {
-        int covered;
-
         members_cone(&M, R, k);
-        covered = members_covered(&M);
-        R->exact_needed[k] = !covered;
-        if (!covered)
-            continue;
-        R->nexact--;
-        for (w = 0; w < M.words; w++)
-            if (M.buf[w] != 0)
-                members_count(&M, w, M.buf[w], -1);
+        R->exact_needed[k] = !members_take(&M);
+        R->nexact -= !R->exact_needed[k];
     }
 
     plan_eq25(R, goal, g);
