@@ -234,9 +234,10 @@ one(const char * family, slong n, slong repeat)
         if (wc_plan(R, P, 0, err) != WC_OK)
             wcbench_die("bench-plan", "plan", err);
         printf("%s n=%ld: cpu %.3f s, wall %.3f s, cells %ld, planes %ld, "
-               "pieces %ld\n", family, (long) n, cpu_now() - t0,
-               wcbench_now() - w0, (long) R->cells->count,
-               (long) R->cells->nplanes, (long) R->goal->npieces);
+               "pieces %ld, exactly needed %ld of %ld\n", family, (long) n,
+               cpu_now() - t0, wcbench_now() - w0, (long) R->cells->count,
+               (long) R->cells->nplanes, (long) R->goal->npieces,
+               (long) R->nexact, (long) R->T->nneeded);
         wc_plan_clear(R);
     }
     wc_error_clear(err);

@@ -169,78 +169,30 @@ plan_eq25(wc_plan_t R, const int * goal, fmpq * g)
     }
 }
 
-/* The cells of each needed cone, as its nonzero bitset words: cone k
-   has words wi(j) with bits wv(j) for off[k] <= j < off[k + 1], kept in
-   blocks of 2^BLOCK_BITS entries (never moved once written).  How many
-   kept cones hold each cell is a bit-sliced counter: bit i of
-   ctr[b * words + i / FLINT_BITS] is bit b of cell i's count (levels
-   bits), so a cone is added or removed a word of cells at a time.  */
-#define BLOCK_BITS 18
-#define BLOCK ((slong) 1 << BLOCK_BITS)
-
+/* The cells of the needed cones as bitsets (planbits.c), computed a
+   cone at a time when needed and never stored: how many kept cones hold
+   each cell is a bit-sliced counter (bit i % FLINT_BITS of level b of
+   word i / FLINT_BITS is bit b of cell i's count, levels bits), so a cone is
+   added or removed a word of cells at a time.  The levels of a word are
+   next to each other: ctr[w * levels + b].  */
 typedef struct
 {
-    slong * off;
-    uint32_t ** wi;
-    ulong ** wv;
-    slong len, nblocks, maxblocks;
+    slong nn;
+    wc_cone_key * keys;     /* nn */
+    wc_cell_bits X;
+    ulong * buf;            /* the current cone's cells */
     ulong * ctr;
     slong levels, words;
 }
 members;
 
-#define MEMBER_WI(M, j) ((M)->wi[(j) >> BLOCK_BITS][(j) & (BLOCK - 1)])
-#define MEMBER_WV(M, j) ((M)->wv[(j) >> BLOCK_BITS][(j) & (BLOCK - 1)])
-
-static int
-members_push(members * M, slong w, ulong x)
-{
-    if (M->len == M->nblocks * BLOCK)
-    {
-        if (M->nblocks == M->maxblocks)
-        {
-            slong a = 2 * M->maxblocks + 16;
-            uint32_t ** wi = realloc(M->wi, sizeof(uint32_t *) * a);
-            ulong ** wv;
-
-            if (wi == NULL)
-                return 0;
-            M->wi = wi;
-            if ((wv = realloc(M->wv, sizeof(ulong *) * a)) == NULL)
-                return 0;
-            M->wv = wv;
-            M->maxblocks = a;
-        }
-        M->wi[M->nblocks] = malloc(sizeof(uint32_t) * BLOCK);
-        M->wv[M->nblocks] = malloc(sizeof(ulong) * BLOCK);
-        if (M->wi[M->nblocks] == NULL || M->wv[M->nblocks] == NULL)
-        {
-            free(M->wi[M->nblocks]);
-            free(M->wv[M->nblocks]);
-            return 0;
-        }
-        M->nblocks++;
-    }
-    MEMBER_WI(M, M->len) = (uint32_t) w;
-    MEMBER_WV(M, M->len) = x;
-    M->len++;
-    return 1;
-}
-
 static void
 members_clear(members * M)
 {
-    slong b;
-
-    for (b = 0; b < M->nblocks; b++)
-    {
-        free(M->wi[b]);
-        free(M->wv[b]);
-    }
-    free(M->wi);
-    free(M->wv);
-    free(M->off);
+    free(M->buf);
     free(M->ctr);
+    _wc_cell_bits_clear(&M->X);
+    _wc_cone_keys_clear(M->keys, M->nn);
 }
 
 /* Add (sign 1) or remove (-1) the cells x of word w to the counts.  */
@@ -251,7 +203,7 @@ members_count(members * M, slong w, ulong x, int sign)
 
     for (b = 0; b < M->levels && x != 0; b++)
     {
-        ulong * c = M->ctr + b * M->words + w;
+        ulong * c = M->ctr + w * M->levels + b;
         ulong carry = sign > 0 ? *c & x : ~*c & x;
 
         *c ^= x;
@@ -268,59 +220,74 @@ members_at_least(const members * M, slong w, slong start)
     slong b;
 
     for (b = start; b < M->levels; b++)
-        r |= M->ctr[b * M->words + w];
+        r |= M->ctr[w * M->levels + b];
     return r;
 }
 
-/* M := the cells of each needed cone, counted.  */
+/* M->buf := the cells of needed cone k.  */
+static void
+members_cone(members * M, const wc_plan_t R, slong k)
+{
+    _wc_cone_key_cells(M->buf, M->keys + k, &M->X, R->cells);
+}
+
+/* M := the bitset index of the cells, and every cell counted in every
+   needed cone.  */
 static int
 needed_members(members * M, wc_plan_t R)
 {
     slong nn = R->T->nneeded, k, w;
-    wc_cone_key * keys = _wc_cone_keys_init(R->cones, nn, R->cells);
-    wc_cell_bits X;
-    ulong * buf = NULL;
-    int ok = _wc_cell_bits_init(&X, R->cells);
+    int ok;
 
+    M->nn = nn;
+    M->keys = _wc_cone_keys_init(R->cones, nn, R->cells);
+    ok = _wc_cell_bits_init(&M->X, R->cells);
     for (M->levels = 1; (WORD(1) << M->levels) <= nn; M->levels++)
         ;
-    M->words = X.words;
-    M->off = malloc(sizeof(slong) * (nn + 1));
-    M->ctr = calloc((size_t) M->levels * X.words + 1, sizeof(ulong));
-    if (ok)
-        buf = malloc(sizeof(ulong) * (X.words + 1));
-    ok = ok && buf != NULL && M->off != NULL && M->ctr != NULL
-        && keys != NULL;
+    M->words = M->X.words;
+    M->ctr = calloc((size_t) M->levels * M->words + 1, sizeof(ulong));
+    M->buf = malloc(sizeof(ulong) * (M->words + 1));
+    ok = ok && M->buf != NULL && M->ctr != NULL && M->keys != NULL;
     for (k = 0; k < nn && ok; k++)
     {
-        M->off[k] = M->len;
-        _wc_cone_key_cells(buf, keys + k, &X, R->cells);
-        for (w = 0; w < X.words && ok; w++)
-            if (buf[w] != 0)
-            {
-                ok = members_push(M, w, buf[w]);
-                members_count(M, w, buf[w], 1);
-            }
+        members_cone(M, R, k);
+        for (w = 0; w < M->words; w++)
+            if (M->buf[w] != 0)
+                members_count(M, w, M->buf[w], 1);
     }
-    if (ok)
-        M->off[nn] = M->len;
-    free(buf);
-    _wc_cell_bits_clear(&X);
-    _wc_cone_keys_clear(keys, nn);
     return ok;
 }
 
-/* Is every cell of cone k (in M) held by another kept cone?  */
+/* Remove the cone M->buf from the counts when every cell of it is held
+   by another kept cone, and return 1; else leave the counts and return
+   0.  One pass: each word is tested (count at least 2, the levels from
+   1 up until they hold the word's cells), then taken off; a cone that is
+   not covered (rare: redundant cones are most) is added back.  */
 static int
-members_covered(const members * M, slong k)
+members_take(members * M)
 {
-    slong j;
+    slong w;
+    int covered = 1;
 
-    for (j = M->off[k]; j < M->off[k + 1]; j++)
-        if ((MEMBER_WV(M, j) & ~members_at_least(M, MEMBER_WI(M, j), 1))
-            != 0)
-            return 0;
-    return 1;
+    for (w = 0; w < M->words; w++)
+    {
+        ulong x = M->buf[w], r = 0;
+        const ulong * c = M->ctr + w * M->levels;
+        slong b;
+
+        if (x == 0)
+            continue;
+        for (b = 1; covered && b < M->levels && (x & ~r) != 0; b++)
+            r |= c[b];
+        if ((x & ~r) != 0)
+            covered = 0;
+        members_count(M, w, x, -1);
+    }
+    if (!covered)
+        for (w = 0; w < M->words; w++)
+            if (M->buf[w] != 0)
+                members_count(M, w, M->buf[w], 1);
+    return covered;
 }
 
 /* Membership of every cell in every needed cone: goal[i] (malloc'd into
@@ -329,7 +296,7 @@ members_covered(const members * M, slong k)
 static int
 plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
 {
-    slong nn = R->T->nneeded, ncells = R->cells->count, i, k, j;
+    slong nn = R->T->nneeded, ncells = R->cells->count, i, k;
     int * goal = *goalp = malloc(sizeof(int) * (ncells + 1));
     members M;
     int status = WC_OK;
@@ -351,18 +318,14 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
                     >> (i % FLINT_BITS)) & 1) == 0;
 
     /* Exact redundancy, in ASCII order: drop a cone inside the union of
-       the cones still kept, i.e. every cell of it held by another.  */
+       the cones still kept, i.e. every cell of it held by another; its
+       cells computed again rather than kept from the count.  */
     R->nexact = nn;
     for (k = 0; k < nn; k++)
     {
-        int covered = members_covered(&M, k);
-
-        R->exact_needed[k] = !covered;
-        if (!covered)
-            continue;
-        R->nexact--;
-        for (j = M.off[k]; j < M.off[k + 1]; j++)
-            members_count(&M, MEMBER_WI(&M, j), MEMBER_WV(&M, j), -1);
+        members_cone(&M, R, k);
+        R->exact_needed[k] = !members_take(&M);
+        R->nexact -= !R->exact_needed[k];
     }
 
     plan_eq25(R, goal, g);

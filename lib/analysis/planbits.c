@@ -25,6 +25,63 @@
 
 #define BITS(X, p, s) ((X)->bits + (3 * (p) + (s) + 1) * (X)->words)
 
+#if FLINT_BITS == 64 && defined(__BYTE_ORDER__) \
+    && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#define FAST_BITS 1
+
+/* A[j] bit i := A[i] bit j, a 64 x 64 bit matrix in place: six rounds
+   of swapping blocks of bits across the diagonal.  */
+static void
+transpose64(ulong * A)
+{
+    ulong m = UWORD(0x00000000FFFFFFFF), t;
+    slong j, k;
+
+    for (j = 32; j != 0; j >>= 1, m ^= m << j)
+        for (k = 0; k < 64; k = ((k | j) + 1) & ~j)
+        {
+            t = ((A[k] >> j) ^ A[k | j]) & m;
+            A[k] ^= t << j;
+            A[k | j] ^= t;
+        }
+}
+
+/* neg, pos := the planes p0 .. p0 + np0 (at most 64) where the n (at most
+   64) rows of signs from s (np bytes apart) are - and +, transposed: bit
+   i of neg[j] for row i and plane p0 + j.  Eight signs at a time: the
+   sign bit and the low bit of each byte, gathered by a multiplication
+   (byte k's low bit to bit 56 + k).  */
+static void
+block_bits(ulong * neg, ulong * pos, const signed char * s, slong np,
+           slong n, slong np0)
+{
+    const ulong lo = UWORD(0x0101010101010101);
+    const ulong gather = UWORD(0x0102040810204080);
+    slong i, t;
+
+    for (i = 0; i < 64; i++)
+    {
+        ulong rn = 0, rp = 0;
+
+        for (t = 0; t < np0 && i < n; t += 8)
+        {
+            ulong v = 0, vn;
+
+            memcpy(&v, s + i * np + t, FLINT_MIN(8, np0 - t));
+            vn = (v >> 7) & lo;
+            rn |= ((vn * gather) >> 56) << t;
+            rp |= (((v & lo & ~vn) * gather) >> 56) << t;
+        }
+        neg[i] = rn;
+        pos[i] = rp;
+    }
+    transpose64(neg);
+    transpose64(pos);
+}
+#else
+#define FAST_BITS 0
+#endif
+
 int
 _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
 {
@@ -45,7 +102,25 @@ _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
     for (w = 0; w < X->words; w++)
     {
         slong lo = w * FLINT_BITS, n = FLINT_MIN(A->count - lo, FLINT_BITS);
+        /* n < FLINT_BITS only in the last word */
+        ulong valid = n == FLINT_BITS ? ~UWORD(0) : (UWORD(1) << n) - 1;
+#if FAST_BITS
+        ulong neg[64], pos[64];
 
+        for (p = 0; p < np; p += 64)
+        {
+            slong np0 = FLINT_MIN(64, np - p), j;
+
+            block_bits(neg, pos, A->sign + lo * np + p, np, n, np0);
+            for (j = 0; j < np0; j++)
+            {
+                BITS(X, p + j, -1)[w] = neg[j];
+                BITS(X, p + j, 1)[w] = pos[j];
+                BITS(X, p + j, 0)[w] = ~(neg[j] | pos[j]) & valid;
+            }
+        }
+        (void) i;
+#else
         for (p = 0; p < np; p++)
         {
             const signed char * s = A->sign + lo * np + p;
@@ -58,10 +133,9 @@ _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
             }
             BITS(X, p, -1)[w] = neg;
             BITS(X, p, 1)[w] = pos;
-            /* n < FLINT_BITS only in the last word */
-            BITS(X, p, 0)[w] = ~(neg | pos)
-                & (n == FLINT_BITS ? ~UWORD(0) : (UWORD(1) << n) - 1);
+            BITS(X, p, 0)[w] = ~(neg | pos) & valid;
         }
+#endif
     }
     return 1;
 }
@@ -166,44 +240,93 @@ face_facets(ulong * tab, slong fw, const wc_cone_key * K)
 /* out |= the cells of cand (in the closure of K's cone) whose face is
    included: the face holding a point of the closure is the one whose
    facets are exactly those the point lies on (wc_cone_locate finds the
-   same face by its rays).  Returns 0 when out of memory.  */
+   same face by its rays); the first such face in K's list decides.  A
+   word of cells at a time: the cells of face f are those on each of its
+   facets (sign 0) and off every other, a few ANDs of the planes' zero
+   bitsets.  Returns 0 when out of memory.  */
 static int
 by_faces(ulong * out, const ulong * cand, const wc_cone_key * K,
-         wc_cell_bits * X, const wc_cells_t A)
+         wc_cell_bits * X)
 {
-    slong fw = K->nf / FLINT_BITS + 1, nfaces = K->C->nfaces, w, j, f;
-    ulong * tab = malloc(sizeof(ulong) * (fw * (nfaces + 1) + 1));
-    ulong * tight;
+    slong fw = K->nf / FLINT_BITS + 1, nfaces = K->C->nfaces, nf = K->nf;
+    slong w, j, f;
+    ulong * tab = malloc(sizeof(ulong) * (fw * (nfaces + 1) + nf + 1));
+    ulong * z;
 
     if (tab == NULL)
         return 0;
     face_facets(tab, fw, K);
-    tight = tab + fw * nfaces;
+    z = tab + fw * nfaces;
     for (w = 0; w < X->words; w++)
     {
-        ulong x;
+        ulong left = cand[w];
 
-        for (x = cand[w]; x != 0; x &= x - 1)
+        if (left == 0)
+            continue;
+        for (j = 0; j < nf; j++)
+            z[j] = BITS(X, K->plane[j], 0)[w];
+        for (f = 0; f < nfaces && left != 0; f++)
         {
-            slong i = w * FLINT_BITS + _wc_plan_ctz(x);
-            const signed char * s = A->sign + i * A->nplanes;
+            const ulong * t = tab + f * fw;
+            ulong x = left;
 
-            memset(tight, 0, sizeof(ulong) * fw);
-            for (j = 0; j < K->nf; j++)
-                if (s[K->plane[j]] == 0)
-                    tight[j / FLINT_BITS] |= UWORD(1) << (j % FLINT_BITS);
-            for (f = 0; f < nfaces; f++)
-            {
-                for (j = 0; j < fw && tab[f * fw + j] == tight[j]; j++)
-                    ;
-                if (j == fw)
-                    break;
-            }
-            if (f < nfaces && K->C->faces[f].included)
-                out[w] |= UWORD(1) << (i % FLINT_BITS);
+            for (j = 0; j < nf && x != 0; j++)
+                x &= ((t[j / FLINT_BITS] >> (j % FLINT_BITS)) & 1)
+                    ? z[j] : ~z[j];
+            left &= ~x;
+            if (K->C->faces[f].included)
+                out[w] |= x;
         }
     }
     free(tab);
+    return 1;
+}
+
+/* cand, strict (X) := the cells of the closure of K's cone and those
+   strictly inside every facet, as the ANDs of and_facet, in one pass
+   over the words when K has at most FUSED facets and equalities.
+   Returns 0 when it has more (nothing done).  */
+#define FUSED 64
+static int
+fused_facets(wc_cell_bits * X, const wc_cone_key * K)
+{
+    const ulong * z[FUSED], * fz[FUSED], * in[FUSED];
+    slong nz = 0, nin = 0, j, w, last = X->count % FLINT_BITS;
+    int open = 1;
+
+    if (K->nf + K->ne > FUSED)
+        return 0;
+    for (j = 0; j < K->ne; j++)
+        z[nz++] = BITS(X, K->plane[K->nf + j], 0);
+    for (j = 0; j < K->nf; j++)
+    {
+        slong p = K->plane[j];
+
+        if (K->orient[j] == 0)
+            open = 0;   /* a zero normal: none strictly inside */
+        else
+        {
+            fz[nin] = BITS(X, p, 0);
+            in[nin++] = K->orient[j] > 0 ? BITS(X, p, -1) : BITS(X, p, 1);
+        }
+    }
+    for (w = 0; w < X->words; w++)
+    {
+        ulong c = ~UWORD(0), st;
+
+        if (w == X->words - 1 && last != 0)
+            c = (UWORD(1) << last) - 1;
+        for (j = 0; j < K->ne; j++)
+            c &= z[j][w];
+        st = open ? c : 0;
+        for (j = 0; j < nin; j++)
+        {
+            c &= fz[j][w] | in[j][w];
+            st &= in[j][w];
+        }
+        X->cand[w] = c;
+        X->strict[w] = st;
+    }
     return 1;
 }
 
@@ -225,11 +348,14 @@ _wc_cone_key_cells(ulong * out, const wc_cone_key * K, wc_cell_bits * X,
         by_lattice(out, X->cand, K, X, A);
         return;
     }
-    memcpy(X->strict, X->cand, sizeof(ulong) * words);
-    for (j = 0; j < K->ne; j++)
-        and_facet(X, K->plane[K->nf + j], 0, 1);
-    for (j = 0; j < K->nf; j++)
-        and_facet(X, K->plane[j], K->orient[j], 0);
+    if (!fused_facets(X, K))
+    {
+        memcpy(X->strict, X->cand, sizeof(ulong) * words);
+        for (j = 0; j < K->ne; j++)
+            and_facet(X, K->plane[K->nf + j], 0, 1);
+        for (j = 0; j < K->nf; j++)
+            and_facet(X, K->plane[j], K->orient[j], 0);
+    }
     /* the boundary: candidates not strictly inside every facet */
     for (w = 0; w < words; w++)
     {
@@ -237,7 +363,7 @@ _wc_cone_key_cells(ulong * out, const wc_cone_key * K, wc_cell_bits * X,
             out[w] = X->strict[w];
         X->cand[w] &= ~X->strict[w];
     }
-    if (!by_faces(out, X->cand, K, X, A))
+    if (!by_faces(out, X->cand, K, X))
         by_lattice(out, X->cand, K, X, A);
 }
 

@@ -52,26 +52,41 @@ typedef __int128 wide;
 
 /* ---------------------------------------------------------------------
    The cell list under construction.  Signs are kept as keys: sign + 1
-   in a byte, so that memcmp orders them - < 0 < +.  The key of the
-   current face and its hash are kept up to date from the planes the walk
-   says have changed: the hash is the XOR of one random word per plane
-   and key byte (Zobrist hashing), so a face costs O(changed) before its
-   lookup, and a chamber met again one comparison of its key.  */
+   in two bits per plane, KEY_PLANES planes to a 64-bit word, the first
+   plane in the highest bits, so that comparing the words as unsigned
+   integers orders keys as their sign vectors (- < 0 < +).  The key of
+   the current face and its hash are kept up to date from the planes the
+   walk says have changed: the hash is the XOR of one random word per
+   plane and sign (Zobrist hashing), so a face costs O(changed) before
+   its lookup, and a chamber met again one comparison of its key.  The
+   keys take a quarter of the bytes of the sign vectors; these are
+   written once, in the sorted order, at the end.  */
+
+#define KEY_PLANES 32
+#define KEY_SHIFT(q) (62 - 2 * ((q) % KEY_PLANES))
+
+/* The sign + 1 of plane q in key k.  */
+static inline unsigned int
+key_get(const uint64_t * k, slong q)
+{
+    return (unsigned int) (k[q / KEY_PLANES] >> KEY_SHIFT(q)) & 3;
+}
 
 typedef struct
 {
     slong m;                /* planes */
+    slong kw;               /* words per key */
     slong cap;              /* cells expected */
     slong count;
-    unsigned char * key;    /* cap x m */
+    uint64_t * key;         /* cap x kw */
     uint64_t * hash;        /* cap */
     fmpz * pt;              /* cap x 3 */
     slong * dim;            /* cap */
     slong size;             /* hash table slots, a power of two */
     slong * slot;
-    unsigned char * cur;    /* m: the current face's key */
+    uint64_t * cur;         /* kw: the current face's key */
     uint64_t curhash;
-    uint64_t * zob;         /* 3 m: the word of plane q and key byte b at
+    uint64_t * zob;         /* 3 m: the word of plane q and sign + 1 b at
                                3 q + b */
 }
 cell_list;
@@ -82,15 +97,16 @@ cell_list_init(cell_list * L, slong m, slong cap)
     slong i;
 
     L->m = m;
+    L->kw = (m + KEY_PLANES - 1) / KEY_PLANES;
     L->cap = cap;
     L->count = 0;
-    L->key = malloc((size_t) cap * m + 1);
+    L->key = malloc(sizeof(uint64_t) * ((size_t) cap * L->kw + 1));
     L->hash = flint_malloc(sizeof(uint64_t) * (cap + 1));
     L->pt = _fmpz_vec_init(3 * (cap + 1));
     L->dim = flint_malloc(sizeof(slong) * (cap + 1));
     L->size = _wc_hash_size(2 * cap + 2);
     L->slot = flint_malloc(sizeof(slong) * L->size);
-    L->cur = flint_malloc(m + 1);
+    L->cur = flint_malloc(sizeof(uint64_t) * (L->kw + 1));
     L->zob = flint_malloc(sizeof(uint64_t) * (3 * m + 1));
     if (L->key == NULL || L->hash == NULL || L->dim == NULL
         || L->slot == NULL || L->cur == NULL || L->zob == NULL)
@@ -100,9 +116,10 @@ cell_list_init(cell_list * L, slong m, slong cap)
     L->curhash = 0;
     for (i = 0; i < 3 * m; i++)
         L->zob[i] = _wc_hash_mix64(UINT64_C(0x9e3779b97f4a7c15) * (i + 1));
+    memset(L->cur, 0, sizeof(uint64_t) * L->kw);
     for (i = 0; i < m; i++)
     {
-        L->cur[i] = 1;
+        L->cur[i / KEY_PLANES] |= UINT64_C(1) << KEY_SHIFT(i);
         L->curhash ^= L->zob[3 * i + 1];
     }
     return 1;
@@ -129,10 +146,11 @@ cell_list_update(cell_list * L, const _wc_face_struct * F)
     for (i = 0; i < F->nchanged; i++)
     {
         slong q = F->changed[i];
-        unsigned char b = (unsigned char) (F->sign[q] + 1);
+        uint64_t b = (uint64_t) (F->sign[q] + 1);
+        uint64_t * w = L->cur + q / KEY_PLANES;
 
-        L->curhash ^= L->zob[3 * q + L->cur[q]] ^ L->zob[3 * q + b];
-        L->cur[q] = b;
+        L->curhash ^= L->zob[3 * q + key_get(L->cur, q)] ^ L->zob[3 * q + b];
+        *w = (*w & ~(UINT64_C(3) << KEY_SHIFT(q))) | (b << KEY_SHIFT(q));
     }
 }
 
@@ -143,8 +161,8 @@ cell_list_update(cell_list * L, const _wc_face_struct * F)
 static slong
 cell_list_add(cell_list * L, slong d, slong * at)
 {
-    slong m = L->m, c = L->count, i;
-    const unsigned char * k = L->cur;
+    slong kw = L->kw, c = L->count, i, j;
+    const uint64_t * k = L->cur;
     uint64_t h = L->curhash;
 
     for (i = (slong) (h & (L->size - 1)); L->slot[i] >= 0;
@@ -152,12 +170,19 @@ cell_list_add(cell_list * L, slong d, slong * at)
     {
         slong o = L->slot[i];
 
-        if (L->hash[o] == h && memcmp(L->key + o * m, k, m) == 0)
-            return o;
+        if (L->hash[o] == h)
+        {
+            const uint64_t * ko = L->key + o * kw;
+
+            for (j = 0; j < kw && ko[j] == k[j]; j++)
+                ;
+            if (j == kw)
+                return o;
+        }
     }
     if (c >= L->cap)
         return -2;
-    memcpy(L->key + c * m, k, m);
+    memcpy(L->key + c * kw, k, sizeof(uint64_t) * kw);
     L->slot[i] = c;
     L->hash[c] = h;
     L->dim[c] = d;
@@ -240,7 +265,7 @@ collect_clear(collect * C)
 /* chamber_multiplier in 128-bit words: h64 set, mid's entries words.  */
 static int
 multiplier_wide(collect * C, slong p, const fmpz * mid,
-                const unsigned char * seckey)
+                const uint64_t * seckey)
 {
     const slong * h = C->h64;
     slong m = C->L->m, q;
@@ -251,7 +276,7 @@ multiplier_wide(collect * C, slong p, const fmpz * mid,
         wide d = h[3 * q] * x + h[3 * q + 1] * y + h[3 * q + 2] * z;
         wide e = C->hh128[q];
 
-        if ((d > 0) - (d < 0) + 1 != seckey[q])
+        if ((unsigned int) ((d > 0) - (d < 0) + 1) != key_get(seckey, q))
             return 0;
         d = d < 0 ? -d : d;
         e = e < 0 ? -e : e;
@@ -271,7 +296,7 @@ multiplier_wide(collect * C, slong p, const fmpz * mid,
    for every q != p.  Returns 0 on a mismatch.  */
 static int
 chamber_multiplier(collect * C, slong p, const fmpz * mid,
-                   const unsigned char * seckey)
+                   const uint64_t * seckey)
 {
     slong m = C->L->m, q;
 
@@ -299,7 +324,7 @@ chamber_multiplier(collect * C, slong p, const fmpz * mid,
     {
         int s = _wc_zvec3_dot_sgn(WC_ROW(C->H, q), mid, C->a);
 
-        if (s + 1 != seckey[q])
+        if ((unsigned int) (s + 1) != key_get(seckey, q))
             return 0;
         /* a quotient below 1 cannot raise k: no division */
         if (q == p || fmpz_is_zero(C->hh + q)
@@ -323,7 +348,7 @@ chamber_point(fmpz * pc, collect * C, const _wc_face_struct * F,
     if (!C->have_k)
     {
         if (!chamber_multiplier(C, F->plane, F->point,
-                                C->L->key + C->sec * C->L->m))
+                                C->L->key + C->sec * C->L->kw))
             return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                 "internal error: cells: the signs of a "
                                 "sector are wrong");
@@ -444,102 +469,152 @@ collect_planes(fmpz_mat_t H, const fmpz_mat_t N)
     _fmpz_vec_clear(v, 3 * (n + 3));
 }
 
+/* A cell to sort: the first word of its key and its index.  */
 typedef struct
 {
-    const unsigned char * key;
-    slong len;
-    slong dim;
+    uint64_t k0;
     slong i;
 }
 key_ref;
 
-/* Cells by dimension, then by key.  */
-static int
-key_ref_cmp(const void * p, const void * q)
+/* a < b for the keys (kw words each, from key) of two cells.  */
+static inline int
+key_ref_less(const key_ref * a, const key_ref * b, const uint64_t * key,
+             slong kw)
 {
-    const key_ref * a = p, * b = q;
+    const uint64_t * x, * y;
+    slong j;
 
-    if (a->dim != b->dim)
-        return a->dim < b->dim ? -1 : 1;
-    return memcmp(a->key, b->key, a->len);
+    if (a->k0 != b->k0)
+        return a->k0 < b->k0;
+    x = key + a->i * kw;
+    y = key + b->i * kw;
+    for (j = 1; j < kw && x[j] == y[j]; j++)
+        ;
+    return j < kw && x[j] < y[j];
 }
 
-/* Put the rows (m bytes each) of key into the order perm (row i
-   becomes the old row perm[i]), in place, with one spare row; perm is
-   used up (every entry set to -1).  */
-static void
-permute_rows(unsigned char * key, slong m, slong * perm, slong n,
-             unsigned char * spare)
+/* Sort r[0 .. n) by key (all keys distinct), with n entries of scratch
+   tmp: a merge sort, runs of 2^k doubling.  Returns the array holding
+   the result (r or tmp).  */
+static key_ref *
+key_sort(key_ref * r, key_ref * tmp, slong n, const uint64_t * key,
+         slong kw)
 {
-    slong i, j, k;
+    slong run, lo;
 
-    for (i = 0; i < n; i++)
+    for (run = 1; run < n; run *= 2)
     {
-        if (perm[i] < 0 || perm[i] == i)
+        for (lo = 0; lo < n; lo += 2 * run)
         {
-            perm[i] = -1;
-            continue;
+            slong mid = FLINT_MIN(lo + run, n), hi = FLINT_MIN(lo + 2 * run, n);
+            slong i = lo, j = mid, o = lo;
+
+            while (i < mid && j < hi)
+                tmp[o++] = key_ref_less(r + j, r + i, key, kw) ? r[j++]
+                    : r[i++];
+            while (i < mid)
+                tmp[o++] = r[i++];
+            while (j < hi)
+                tmp[o++] = r[j++];
         }
-        /* the cycle i <- perm[i] <- perm[perm[i]] ... */
-        memcpy(spare, key + i * m, m);
-        for (j = i; perm[j] != i; j = k)
         {
-            k = perm[j];
-            memcpy(key + j * m, key + k * m, m);
-            perm[j] = -1;
+            key_ref * t = r;
+
+            r = tmp;
+            tmp = t;
         }
-        memcpy(key + j * m, spare, m);
-        perm[j] = -1;
+    }
+    return r;
+}
+
+/* The signs of four planes, a byte of a key, as four sign bytes.  */
+static void
+unpack_table(uint32_t * tab)
+{
+    unsigned int b, j;
+
+    for (b = 0; b < 256; b++)
+    {
+        unsigned char c[4];
+
+        for (j = 0; j < 4; j++)
+            c[j] = (unsigned char) (((b >> (6 - 2 * j)) & 3) - 1);
+        memcpy(tab + b, c, 4);
     }
 }
 
-/* A := the cells of L on the planes H (taken), sorted; L's keys become
-   A's signs.  Returns 0 when out of memory.  */
+/* sign[0 .. m) := the signs of key k (tab from unpack_table).  */
+static void
+key_unpack(signed char * sign, const uint64_t * k, slong m,
+           const uint32_t * tab)
+{
+    slong q, j;
+
+    for (q = 0; q + 4 <= m; q += 4)
+    {
+        j = q % KEY_PLANES;
+        memcpy(sign + q, tab + ((k[q / KEY_PLANES] >> (56 - 2 * j)) & 255),
+               4);
+    }
+    for (; q < m; q++)
+        sign[q] = (signed char) ((int) key_get(k, q) - 1);
+}
+
+/* A := the cells of L on the planes H (taken), sorted by dimension
+   (bucketed), then by key; A's signs are L's keys unpacked in that
+   order.  Returns 0 when out of memory.  */
 static int
 cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
 {
-    slong m = L->m, total = L->count, i;
-    key_ref * ref = flint_malloc(sizeof(key_ref) * (total + 1));
-    slong * perm = flint_malloc(sizeof(slong) * (total + 1));
-    unsigned char * spare = flint_malloc(m + 1);
+    slong m = L->m, kw = L->kw, total = L->count, i, d, start[5] = {0};
+    key_ref * ref = flint_malloc(sizeof(key_ref) * (2 * total + 1));
+    signed char * sign = malloc((size_t) total * m + 1);
+    slong * dim = flint_malloc(sizeof(slong) * (total + 1));
+    uint32_t tab[256];
 
-    if (ref == NULL || perm == NULL || spare == NULL)
+    if (ref == NULL || sign == NULL || dim == NULL)
     {
         flint_free(ref);
-        flint_free(perm);
-        flint_free(spare);
+        free(sign);
+        flint_free(dim);
         return 0;
     }
     for (i = 0; i < total; i++)
+        start[L->dim[i] + 1]++;
+    for (d = 0; d < 4; d++)
+        start[d + 1] += start[d];
+    for (i = 0; i < total; i++)
     {
-        ref[i].key = L->key + i * m;
-        ref[i].len = m;
-        ref[i].dim = L->dim[i];
-        ref[i].i = i;
+        key_ref * r = ref + start[L->dim[i]]++;
+
+        r->k0 = L->key[i * kw];
+        r->i = i;
     }
-    qsort(ref, total, sizeof(key_ref), key_ref_cmp);
+    unpack_table(tab);
     A->nplanes = m;
     fmpz_mat_swap(A->planes, H);
     A->count = total;
     fmpz_mat_clear(A->point);
     fmpz_mat_init(A->point, total, 3);
-    A->dim = flint_malloc(sizeof(slong) * (total + 1));
-    for (i = 0; i < total; i++)
+    for (d = 0, i = 0; d < 4; d++)
     {
-        slong c = ref[i].i;
+        /* start[d] is now the end of dimension d's cells */
+        slong lo = d == 0 ? 0 : start[d - 1], n = start[d] - lo, j;
+        key_ref * r = key_sort(ref + lo, ref + total + lo, n, L->key, kw);
 
-        _fmpz_vec_swap(WC_ROW(A->point, i), L->pt + 3 * c, 3);
-        A->dim[i] = L->dim[c];
-        perm[i] = c;
+        for (j = 0; j < n; j++, i++)
+        {
+            slong c = r[j].i;
+
+            _fmpz_vec_swap(WC_ROW(A->point, i), L->pt + 3 * c, 3);
+            dim[i] = d;
+            key_unpack(sign + i * m, L->key + c * kw, m, tab);
+        }
     }
+    A->dim = dim;
+    A->sign = sign;
     flint_free(ref);
-    permute_rows(L->key, m, perm, total, spare);
-    for (i = 0; i < total * m; i++)
-        L->key[i]--;
-    A->sign = (signed char *) L->key;
-    L->key = NULL;
-    flint_free(perm);
-    flint_free(spare);
     return 1;
 }
 
