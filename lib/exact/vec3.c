@@ -6,6 +6,9 @@
 
 #include <config.h>
 
+#include <flint/ulong_extras.h>
+#include <flint/fmpz_vec.h>
+
 #include "exact/vec3.h"
 
 void
@@ -71,4 +74,70 @@ _wc_zvec3_dot_sgn_fast(const fmpz * a, const fmpz * b, fmpz_t t)
     }
 #endif
     return _wc_zvec3_dot_sgn(a, b, t);
+}
+
+#ifdef __SIZEOF_INT128__
+/* f := v, |v| < 2^127.  */
+static void
+set_i128(fmpz_t f, __int128 v)
+{
+    unsigned __int128 u = (unsigned __int128) v;
+
+    fmpz_set_signed_uiui(f, (ulong) (u >> 64), (ulong) u);
+}
+
+#define WORDS3(a) (!COEFF_IS_MPZ((a)[0]) && !COEFF_IS_MPZ((a)[1]) \
+                   && !COEFF_IS_MPZ((a)[2]))
+#endif
+
+void
+_wc_zvec3_cross_fast(fmpz * c, const fmpz * a, const fmpz * b)
+{
+#ifdef __SIZEOF_INT128__
+    /* Word entries are below 2^62 in absolute value: each product is
+       below 2^124 and each difference below 2^125.  */
+    if (WORDS3(a) && WORDS3(b))
+    {
+        set_i128(c + 0, (__int128) a[1] * b[2] - (__int128) a[2] * b[1]);
+        set_i128(c + 1, (__int128) a[2] * b[0] - (__int128) a[0] * b[2]);
+        set_i128(c + 2, (__int128) a[0] * b[1] - (__int128) a[1] * b[0]);
+        return;
+    }
+#endif
+    _wc_zvec3_cross(c, a, b);
+}
+
+void
+_wc_zvec3_dot_fast(fmpz_t r, const fmpz * a, const fmpz * b)
+{
+#ifdef __SIZEOF_INT128__
+    /* As in _wc_zvec3_dot_sgn_fast: the sum is below 2^126.  */
+    if (WORDS3(a) && WORDS3(b))
+    {
+        set_i128(r, (__int128) a[0] * b[0] + (__int128) a[1] * b[1]
+                 + (__int128) a[2] * b[2]);
+        return;
+    }
+#endif
+    _wc_zvec3_dot_sgn(a, b, r);
+}
+
+void
+_wc_zvec3_primitive_fast(fmpz * h, fmpz_t t)
+{
+    /* Word entries: their gcd in words, each quotient a word.  */
+    if (!COEFF_IS_MPZ(h[0]) && !COEFF_IS_MPZ(h[1]) && !COEFF_IS_MPZ(h[2]))
+    {
+        ulong g = n_gcd(FLINT_ABS(h[0]), FLINT_ABS(h[1]));
+        slong j;
+
+        g = n_gcd(g, FLINT_ABS(h[2]));
+        if (g > 1)
+            for (j = 0; j < 3; j++)
+                fmpz_set_si(h + j, h[j] / (slong) g);
+        return;
+    }
+    _fmpz_vec_content(t, h, 3);
+    if (!fmpz_is_zero(t) && !fmpz_is_one(t))
+        _fmpz_vec_scalar_divexact_fmpz(h, h, 3, t);
 }

@@ -31,4 +31,15 @@ int _wc_zvec3_dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t);
    t is scratch only (it does not hold a . b afterwards).  */
 int _wc_zvec3_dot_sgn_fast(const fmpz * a, const fmpz * b, fmpz_t t);
 
+/* c := a x b and r := a . b, in 128-bit integers when no entry of a or b
+   is a GMP integer (the same values as _wc_zvec3_cross and
+   _wc_zvec3_dot_sgn).  c must not alias a or b.  */
+void _wc_zvec3_cross_fast(fmpz * c, const fmpz * a, const fmpz * b);
+void _wc_zvec3_dot_fast(fmpz_t r, const fmpz * a, const fmpz * b);
+
+/* h := h divided by the gcd of its entries (nothing when h is 0), as
+   zvec3set.h's _wc_zvec3_primitive does, but in
+   words when no entry is a GMP integer; t is scratch.  */
+void _wc_zvec3_primitive_fast(fmpz * h, fmpz_t t);
+
 #endif

@@ -1,0 +1,171 @@
+/* t-vec3fast.c -- the word paths of exact/vec3.c and of the set-up of a
+   canonical 3-D cone against the plain fmpz arithmetic.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   The references below (ref_cross, ref_dot, ref_primitive) are the
+   deliberate independent copies of the fmpz arithmetic the fast paths
+   replace: plain fmpz_mul and fmpz_submul, and the content by fmpz_gcd.
+   Entries are drawn of every size: zero, tiny, up to the largest word
+   fmpz (2^62 - 1), just past it, and far past a word; vectors repeat,
+   negate, scale and share entries (degenerate cross products: zero,
+   parallel).  */
+
+#include <config.h>
+
+#include <flint/fmpz_vec.h>
+
+#include "testutil.h"
+#include "exact/vec3.h"
+
+/* x := a random integer of a random size.  */
+static void
+rand_entry(fmpz_t x)
+{
+    switch (wctest_randint(0, 6))
+    {
+    case 0:
+        fmpz_zero(x);
+        break;
+    case 1:
+        fmpz_set_si(x, wctest_randint(-3, 3));
+        break;
+    case 2:
+        fmpz_set_si(x, wctest_randint(-(WORD(1) << 30), WORD(1) << 30));
+        break;
+    case 3:     /* the largest word fmpz and its neighbours */
+        fmpz_set_si(x, COEFF_MAX - wctest_randint(0, 2));
+        fmpz_add_si(x, x, wctest_randint(0, 2));
+        break;
+    case 4:
+        fmpz_set_ui(x, wctest_rand() >> wctest_randint(0, 63));
+        break;
+    default:    /* past a word */
+        fmpz_set_ui(x, wctest_rand());
+        fmpz_mul_2exp(x, x, wctest_randint(0, 100));
+        fmpz_add_ui(x, x, wctest_rand() >> 32);
+        break;
+    }
+    if (wctest_chance(1, 2))
+        fmpz_neg(x, x);
+}
+
+static void
+rand_vec(fmpz * v, const fmpz * other)
+{
+    slong j;
+
+    for (j = 0; j < 3; j++)
+        rand_entry(v + j);
+    switch (wctest_randint(0, 7))
+    {
+    case 0:                     /* repeated */
+        _fmpz_vec_set(v, other, 3);
+        break;
+    case 1:                     /* opposite */
+        _fmpz_vec_neg(v, other, 3);
+        break;
+    case 2:                     /* parallel */
+        _fmpz_vec_scalar_mul_si(v, other, 3, wctest_randint(-5, 5));
+        break;
+    case 3:                     /* one shared entry */
+        fmpz_set(v + wctest_randint(0, 2), other + wctest_randint(0, 2));
+        break;
+    default:
+        break;
+    }
+}
+
+static void
+ref_cross(fmpz * c, const fmpz * a, const fmpz * b)
+{
+    slong j;
+
+    for (j = 0; j < 3; j++)
+    {
+        fmpz_mul(c + j, a + (j + 1) % 3, b + (j + 2) % 3);
+        fmpz_submul(c + j, a + (j + 2) % 3, b + (j + 1) % 3);
+    }
+}
+
+static void
+ref_dot(fmpz_t r, const fmpz * a, const fmpz * b)
+{
+    slong j;
+
+    fmpz_zero(r);
+    for (j = 0; j < 3; j++)
+        fmpz_addmul(r, a + j, b + j);
+}
+
+static void
+ref_primitive(fmpz * h)
+{
+    fmpz_t g;
+    slong j;
+
+    fmpz_init(g);
+    for (j = 0; j < 3; j++)
+        fmpz_gcd(g, g, h + j);
+    if (!fmpz_is_zero(g))
+        for (j = 0; j < 3; j++)
+            fmpz_divexact(h + j, h + j, g);
+    fmpz_clear(g);
+}
+
+static void
+check_one(void)
+{
+    fmpz * a = _fmpz_vec_init(3), * b = _fmpz_vec_init(3);
+    fmpz * c = _fmpz_vec_init(3), * d = _fmpz_vec_init(3);
+    fmpz_t r, s, t;
+
+    fmpz_init(r);
+    fmpz_init(s);
+    fmpz_init(t);
+    rand_vec(a, b);
+    rand_vec(b, a);
+    _wc_zvec3_cross_fast(c, a, b);
+    ref_cross(d, a, b);
+    if (!_fmpz_vec_equal(c, d, 3))
+        wctest_fail("cross product differs");
+    _wc_zvec3_dot_fast(r, a, b);
+    ref_dot(s, a, b);
+    if (!fmpz_equal(r, s))
+        wctest_fail("dot product differs");
+    /* The content of a cross product (the fan's facets), and of a vector
+       times a small multiplier.  */
+    if (wctest_chance(1, 2))
+        _fmpz_vec_scalar_mul_si(d, a, 3, wctest_randint(-40, 40));
+    _fmpz_vec_set(c, d, 3);
+    _wc_zvec3_primitive_fast(c, t);
+    ref_primitive(d);
+    if (!_fmpz_vec_equal(c, d, 3))
+        wctest_fail("primitive vector differs");
+    _fmpz_vec_clear(a, 3);
+    _fmpz_vec_clear(b, 3);
+    _fmpz_vec_clear(c, 3);
+    _fmpz_vec_clear(d, 3);
+    fmpz_clear(r);
+    fmpz_clear(s);
+    fmpz_clear(t);
+}
+
+int
+main(void)
+{
+    slong iters, i;
+
+    wctest_init("t-vec3fast");
+    iters = wctest_iters(20000);
+    for (i = 0; i < iters; i++)
+    {
+        if (!wctest_iter(i))
+            continue;
+        check_one();
+    }
+    flint_cleanup_master();
+    return 0;
+}
