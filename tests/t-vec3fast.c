@@ -11,14 +11,21 @@
    Entries are drawn of every size: zero, tiny, up to the largest word
    fmpz (2^62 - 1), just past it, and far past a word; vectors repeat,
    negate, scale and share entries (degenerate cross products: zero,
-   parallel).  */
+   parallel).  Then the canonical 3-D cone set into a cone that already
+   holds an answer (cone3.c keeps its arrays when the shape allows) against
+   the same cone set into a fresh one: the same JSON, byte for byte.  */
 
 #include <config.h>
+
+#include <stdlib.h>
+#include <string.h>
 
 #include <flint/fmpz_vec.h>
 
 #include "testutil.h"
 #include "exact/vec3.h"
+#include "exact/cone.h"
+#include "exact/cone3.h"
 
 /* x := a random integer of a random size.  */
 static void
@@ -153,10 +160,80 @@ check_one(void)
     fmpz_clear(t);
 }
 
+/* G := k random generators (rows), small, mostly in the half-space
+   z > 0 (pointed cones of few extreme rays, so that consecutive answers
+   often share their shape), sometimes anywhere (R^3, planes, lines).  */
+static void
+rand_gens(fmpq_mat_t G)
+{
+    slong k = wctest_randint(0, 9), i, j;
+    int half = wctest_chance(4, 5);
+
+    fmpq_mat_clear(G);
+    fmpq_mat_init(G, k, 3);
+    for (i = 0; i < k; i++)
+        for (j = 0; j < 3; j++)
+            fmpq_set_si(fmpq_mat_entry(G, i, j),
+                        j == 2 && half ? wctest_randint(1, 3)
+                        : wctest_randint(-3, 3), 1);
+}
+
+/* C := the 3-D cone of G by cone3.c's route (generators, or polar: G
+   as the inequalities), or by the library's entry when cone3.c declines;
+   by the entry alone when entry.  */
+static void
+set_cone(wc_cone_t C, const fmpq_mat_t G, int polar, int entry)
+{
+    wc_error_t err;
+    int done = 0, r = WC_OK;
+
+    wc_error_init(err);
+    if (!entry)
+        r = polar ? _wc_cone3_hrep(C, &done, NULL, G, err)
+            : _wc_cone3_generators(C, &done, G, NULL, err);
+    if (r == WC_OK && !done)
+        r = polar ? wc_cone_set_hrep(C, NULL, G, NULL, err)
+            : wc_cone_set_generators(C, G, NULL, err);
+    if (r != WC_OK)
+        wctest_fail("the cone: %s", err->message);
+    wc_error_clear(err);
+}
+
+/* The kept cone C gets the cone of a random G, compared with a fresh
+   one; sometimes C first gets another answer, by the library's entry.  */
+static void
+check_reuse(wc_cone_t C)
+{
+    fmpq_mat_t G;
+    wc_cone_t D;
+    int polar = wctest_chance(1, 4);
+    char * a, * b;
+
+    fmpq_mat_init(G, 0, 3);
+    if (wctest_chance(1, 4))
+    {
+        rand_gens(G);
+        set_cone(C, G, wctest_chance(1, 2), 1);
+    }
+    rand_gens(G);
+    wc_cone_init(D, 3);
+    set_cone(D, G, polar, 0);
+    set_cone(C, G, polar, 0);
+    a = wctest_cone_json(C);
+    b = wctest_cone_json(D);
+    if (strcmp(a, b) != 0)
+        wctest_fail("a kept cone differs from a fresh one:\n%s\n%s", a, b);
+    free(a);
+    free(b);
+    wc_cone_clear(D);
+    fmpq_mat_clear(G);
+}
+
 int
 main(void)
 {
     slong iters, i;
+    wc_cone_t C;
 
     wctest_init("t-vec3fast");
     iters = wctest_iters(20000);
@@ -166,6 +243,15 @@ main(void)
             continue;
         check_one();
     }
+    wc_cone_init(C, 3);
+    iters = wctest_iters(3000);
+    for (i = 0; i < iters; i++)
+    {
+        if (!wctest_iter(i))
+            continue;
+        check_reuse(C);
+    }
+    wc_cone_clear(C);
     flint_cleanup_master();
     return 0;
 }
