@@ -13,6 +13,7 @@
 #include <config.h>
 
 #include <stdlib.h>
+#include <string.h>
 
 #include <flint/fmpz_vec.h>
 
@@ -29,9 +30,8 @@ typedef struct
 ref3;
 
 static int
-ref3_cmp(const void * a, const void * b)
+ref3_cmp(const ref3 * x, const ref3 * y)
 {
-    const ref3 * x = a, * y = b;
     slong j;
     int c;
 
@@ -51,12 +51,50 @@ ref3_cmp(const void * a, const void * b)
     return 0;
 }
 
+/* Bottom-up merge sort of r[0..m) (tmp: m slots), without qsort's
+   indirect calls.  */
+static void
+sort_refs(ref3 * r, ref3 * tmp, slong m)
+{
+    slong w, i;
+
+    for (w = 1; w < m; w *= 2)
+    {
+        for (i = 0; i < m; i += 2 * w)
+        {
+            slong mid = FLINT_MIN(i + w, m), hi = FLINT_MIN(i + 2 * w, m);
+            slong a = i, b = mid, o = i;
+
+            while (a < mid && b < hi)
+                tmp[o++] = ref3_cmp(r + b, r + a) < 0 ? r[b++] : r[a++];
+            while (a < mid)
+                tmp[o++] = r[a++];
+            while (b < hi)
+                tmp[o++] = r[b++];
+        }
+        memcpy(r, tmp, sizeof(ref3) * m);
+    }
+}
+
+/* d := s, word entries copied as words.  */
+static void
+set3(fmpz * d, const fmpz * s)
+{
+    slong j;
+
+    for (j = 0; j < 3; j++)
+        if (!COEFF_IS_MPZ(d[j]) && !COEFF_IS_MPZ(s[j]))
+            d[j] = s[j];
+        else
+            fmpz_set(d + j, s + j);
+}
+
 /* A := the m rows V (3m entries) sorted; pos[i] := the sorted index of
    row i (when pos is not NULL).  */
 static int
 sorted_rows(fmpz_mat_t A, const fmpz * V, slong m, slong * pos)
 {
-    ref3 * r = malloc(sizeof(ref3) * (m + 1));
+    ref3 * r = malloc(sizeof(ref3) * (2 * m + 1));
     slong i;
 
     if (r == NULL)
@@ -66,7 +104,7 @@ sorted_rows(fmpz_mat_t A, const fmpz * V, slong m, slong * pos)
         r[i].row = V + 3 * i;
         r[i].idx = i;
     }
-    qsort(r, m, sizeof(ref3), ref3_cmp);
+    sort_refs(r, r + m, m);
     if (fmpz_mat_nrows(A) != m || fmpz_mat_ncols(A) != 3)
     {
         fmpz_mat_clear(A);
@@ -74,7 +112,7 @@ sorted_rows(fmpz_mat_t A, const fmpz * V, slong m, slong * pos)
     }
     for (i = 0; i < m; i++)
     {
-        _fmpz_vec_set(WC_ROW(A, i), r[i].row, 3);
+        set3(WC_ROW(A, i), r[i].row);
         if (pos != NULL)
             pos[r[i].idx] = i;
     }

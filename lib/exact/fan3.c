@@ -398,9 +398,18 @@ fill(_wc_fan3_t F, const fmpz * G, const slong * S, slong m, fmpz_t t)
     F->facets = _fmpz_vec_init(3 * m);
     for (i = 0; i < m; i++)
     {
-        fmpz * h = F->facets + 3 * i;
+        fmpz * h = F->facets + 3 * i, * r = F->rays + 3 * i;
+        const fmpz * g = G + 3 * S[i];
 
-        _fmpz_vec_set(F->rays + 3 * i, G + 3 * S[i], 3);
+        /* r is 0 (fresh): word entries copy as words.  */
+        if (!COEFF_IS_MPZ(g[0]) && !COEFF_IS_MPZ(g[1]) && !COEFF_IS_MPZ(g[2]))
+        {
+            r[0] = g[0];
+            r[1] = g[1];
+            r[2] = g[2];
+        }
+        else
+            _fmpz_vec_set(r, g, 3);
         _wc_zvec3_cross_fast(h, G + 3 * S[(i + 1) % m], G + 3 * S[i]);
         _wc_zvec3_primitive_fast(h, t);
     }

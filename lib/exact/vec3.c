@@ -122,16 +122,47 @@ _wc_zvec3_dot_fast(fmpz_t r, const fmpz * a, const fmpz * b)
     _wc_zvec3_dot_sgn(a, b, r);
 }
 
+/* gcd(a, b), Stein's binary algorithm (shifts and subtractions) where the
+   compiler counts trailing zeros.  */
+static ulong
+gcd_words(ulong a, ulong b)
+{
+#if defined(__GNUC__) && FLINT_BITS == 64
+    int k;
+
+    if (a == 0 || b == 0)
+        return a | b;
+    k = __builtin_ctzll(a | b);
+    a >>= __builtin_ctzll(a);
+    do
+    {
+        b >>= __builtin_ctzll(b);
+        if (a > b)
+        {
+            ulong x = a;
+
+            a = b;
+            b = x;
+        }
+        b -= a;
+    }
+    while (b != 0);
+    return a << k;
+#else
+    return n_gcd(a, b);
+#endif
+}
+
 void
 _wc_zvec3_primitive_fast(fmpz * h, fmpz_t t)
 {
     /* Word entries: their gcd in words, each quotient a word.  */
     if (!COEFF_IS_MPZ(h[0]) && !COEFF_IS_MPZ(h[1]) && !COEFF_IS_MPZ(h[2]))
     {
-        ulong g = n_gcd(FLINT_ABS(h[0]), FLINT_ABS(h[1]));
+        ulong g = gcd_words(FLINT_ABS(h[0]), FLINT_ABS(h[1]));
         slong j;
 
-        g = n_gcd(g, FLINT_ABS(h[2]));
+        g = gcd_words(g, FLINT_ABS(h[2]));
         if (g > 1)
             for (j = 0; j < 3; j++)
                 fmpz_set_si(h + j, h[j] / (slong) g);
