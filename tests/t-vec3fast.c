@@ -7,7 +7,8 @@
 
    The references below (ref_cross, ref_dot, ref_primitive) are the
    deliberate independent copies of the fmpz arithmetic the fast paths
-   replace: plain fmpz_mul and fmpz_submul, and the content by fmpz_gcd.
+   replace: plain fmpz_mul and fmpz_submul, and the content by fmpz_gcd;
+   check_sqmul's reference is plain fmpz_mul and fmpz_cmp.
    Entries are drawn of every size: zero, tiny, up to the largest word
    fmpz (2^62 - 1), just past it, and far past a word; vectors repeat,
    negate, scale and share entries (degenerate cross products: zero,
@@ -120,6 +121,66 @@ ref_primitive(fmpz * h)
         for (j = 0; j < 3; j++)
             fmpz_divexact(h + j, h + j, g);
     fmpz_clear(g);
+}
+
+/* _wc_z_sqmul_cmp against fmpz: random sizes, equal sides, and sides
+   one multiplier apart.  */
+static void
+check_sqmul(void)
+{
+    fmpz_t a, b, c, d, l, r, x, y;
+    slong s;
+    int got, want;
+
+    fmpz_init(a);
+    fmpz_init(b);
+    fmpz_init(c);
+    fmpz_init(d);
+    fmpz_init(l);
+    fmpz_init(r);
+    fmpz_init(x);
+    fmpz_init(y);
+    rand_entry(a);
+    rand_entry(b);
+    rand_entry(c);
+    rand_entry(d);
+    if (wctest_chance(3, 4))
+        fmpz_abs(b, b);
+    if (wctest_chance(3, 4))
+        fmpz_abs(d, d);
+    switch (wctest_randint(0, 3))
+    {
+    case 0:                     /* equal: (s a)^2 b against a^2 (s^2 b) */
+        s = wctest_randint(-3, 3);
+        fmpz_mul_si(c, a, s);
+        fmpz_mul_si(d, b, s * s);
+        fmpz_swap(a, c);
+        fmpz_swap(b, d);
+        break;
+    case 1:                     /* one apart */
+        fmpz_set(c, a);
+        fmpz_add_si(d, b, wctest_randint(-1, 1));
+        break;
+    default:
+        break;
+    }
+    got = _wc_z_sqmul_cmp(a, b, c, d, l, r);
+    fmpz_mul(x, a, a);
+    fmpz_mul(x, x, b);
+    fmpz_mul(y, c, c);
+    fmpz_mul(y, y, d);
+    want = fmpz_cmp(x, y);
+    want = (want > 0) - (want < 0);
+    if (got != want)
+        wctest_fail("_wc_z_sqmul_cmp: %d, the reference %d", got, want);
+    fmpz_clear(a);
+    fmpz_clear(b);
+    fmpz_clear(c);
+    fmpz_clear(d);
+    fmpz_clear(l);
+    fmpz_clear(r);
+    fmpz_clear(x);
+    fmpz_clear(y);
 }
 
 static void
@@ -242,6 +303,7 @@ main(void)
         if (!wctest_iter(i))
             continue;
         check_one();
+        check_sqmul();
     }
     wc_cone_init(C, 3);
     iters = wctest_iters(3000);

@@ -228,11 +228,9 @@ farthest(fan_ctx * c, const fmpz * q, const slong * x, slong p)
         {
             have = 1;
             _wc_zvec3_dot_fast(na, GV(c, x[i]), GV(c, x[i]));
-            fmpz_mul(l, qa, qa);
-            fmpz_mul(l, l, ns);
-            fmpz_mul(r, qs, qs);
-            fmpz_mul(r, r, na);
-            far = sa > 0 ? fmpz_cmp(l, r) < 0 : fmpz_cmp(l, r) > 0;
+            int cm = _wc_z_sqmul_cmp(qa, ns, qs, na, l, r);
+
+            far = sa > 0 ? cm < 0 : cm > 0;
         }
         if (far)
         {

@@ -172,3 +172,49 @@ _wc_zvec3_primitive_fast(fmpz * h, fmpz_t t)
     if (!fmpz_is_zero(t) && !fmpz_is_one(t))
         _fmpz_vec_scalar_divexact_fmpz(h, h, 3, t);
 }
+
+#ifdef __SIZEOF_INT128__
+/* The 192-bit product x y as hi (128 bits) and lo (64), for x < 2^124 and
+   y < 2^62: with x = x1 2^64 + x0, x0 y < 2^128 and
+   x1 y + (x0 y >> 64) < 2^60 2^62 + 2^64 < 2^128.  */
+static void
+mul_192(unsigned __int128 * hi, ulong * lo, unsigned __int128 x, ulong y)
+{
+    unsigned __int128 p0 = (unsigned __int128) (ulong) x * y;
+
+    *hi = (unsigned __int128) (ulong) (x >> 64) * y + (p0 >> 64);
+    *lo = (ulong) p0;
+}
+#endif
+
+int
+_wc_z_sqmul_cmp(const fmpz_t a, const fmpz_t b, const fmpz_t c,
+                const fmpz_t d, fmpz_t l, fmpz_t r)
+{
+    int s;
+
+#ifdef __SIZEOF_INT128__
+    /* Word integers are below 2^62 in absolute value: the squares are
+       below 2^124, b and d (>= 0) below 2^62, as mul_192 needs.  */
+    if (!COEFF_IS_MPZ(*a) && !COEFF_IS_MPZ(*b) && !COEFF_IS_MPZ(*c)
+        && !COEFF_IS_MPZ(*d) && *b >= 0 && *d >= 0)
+    {
+        unsigned __int128 a2 = (unsigned __int128) ((__int128) *a * *a);
+        unsigned __int128 c2 = (unsigned __int128) ((__int128) *c * *c);
+        unsigned __int128 lh, rh;
+        ulong ll, rl;
+
+        mul_192(&lh, &ll, a2, (ulong) *b);
+        mul_192(&rh, &rl, c2, (ulong) *d);
+        if (lh != rh)
+            return lh < rh ? -1 : 1;
+        return (ll > rl) - (ll < rl);
+    }
+#endif
+    fmpz_mul(l, a, a);
+    fmpz_mul(l, l, b);
+    fmpz_mul(r, c, c);
+    fmpz_mul(r, r, d);
+    s = fmpz_cmp(l, r);
+    return (s > 0) - (s < 0);
+}

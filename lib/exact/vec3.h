@@ -42,4 +42,10 @@ void _wc_zvec3_dot_fast(fmpz_t r, const fmpz * a, const fmpz * b);
    words when no entry is a GMP integer; t is scratch.  */
 void _wc_zvec3_primitive_fast(fmpz * h, fmpz_t t);
 
+/* The sign of a^2 b - c^2 d (-1, 0, 1; the comparison of two squared
+   cosines), in 192-bit words when every argument is a word integer and
+   b, d >= 0; l and r are scratch.  */
+int _wc_z_sqmul_cmp(const fmpz_t a, const fmpz_t b, const fmpz_t c,
+                    const fmpz_t d, fmpz_t l, fmpz_t r);
+
 #endif
