@@ -22,6 +22,7 @@ C_TESTS = \
 	tests/t-model \
 	tests/t-cone \
 	tests/t-hull3 \
+	tests/t-vec3fast \
 	tests/t-routes \
 	tests/t-direct3 \
 	tests/t-zrows3 \

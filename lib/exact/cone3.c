@@ -13,6 +13,7 @@
 #include <config.h>
 
 #include <stdlib.h>
+#include <string.h>
 
 #include <flint/fmpz_vec.h>
 
@@ -29,34 +30,63 @@ typedef struct
 ref3;
 
 static int
-ref3_cmp(const void * a, const void * b)
+ref3_cmp(const ref3 * x, const ref3 * y)
 {
-    const ref3 * x = a, * y = b;
     slong j;
     int c;
 
     for (j = 0; j < 3; j++)
-        if ((c = fmpz_cmp(x->row + j, y->row + j)) != 0)
+    {
+        fmpz a = x->row[j], b = y->row[j];
+
+        /* Two word integers compare as words (what fmpz_cmp does, without
+           the call).  */
+        if (!COEFF_IS_MPZ(a) && !COEFF_IS_MPZ(b))
+            c = (a > b) - (a < b);
+        else
+            c = fmpz_cmp(x->row + j, y->row + j);
+        if (c != 0)
             return c;
+    }
     return 0;
 }
 
-typedef struct
+/* Bottom-up merge sort of r[0..m) (tmp: m slots), without qsort's
+   indirect calls.  */
+static void
+sort_refs(ref3 * r, ref3 * tmp, slong m)
 {
-    slong a, b;
+    slong w, i;
+
+    for (w = 1; w < m; w *= 2)
+    {
+        for (i = 0; i < m; i += 2 * w)
+        {
+            slong mid = FLINT_MIN(i + w, m), hi = FLINT_MIN(i + 2 * w, m);
+            slong a = i, b = mid, o = i;
+
+            while (a < mid && b < hi)
+                tmp[o++] = ref3_cmp(r + b, r + a) < 0 ? r[b++] : r[a++];
+            while (a < mid)
+                tmp[o++] = r[a++];
+            while (b < hi)
+                tmp[o++] = r[b++];
+        }
+        memcpy(r, tmp, sizeof(ref3) * m);
+    }
 }
-pair3;
 
-static int
-pair3_cmp(const void * x, const void * y)
+/* d := s, word entries copied as words.  */
+static void
+set3(fmpz * d, const fmpz * s)
 {
-    const pair3 * p = x, * q = y;
+    slong j;
 
-    if (p->a != q->a)
-        return p->a < q->a ? -1 : 1;
-    if (p->b != q->b)
-        return p->b < q->b ? -1 : 1;
-    return 0;
+    for (j = 0; j < 3; j++)
+        if (!COEFF_IS_MPZ(d[j]) && !COEFF_IS_MPZ(s[j]))
+            d[j] = s[j];
+        else
+            fmpz_set(d + j, s + j);
 }
 
 /* A := the m rows V (3m entries) sorted; pos[i] := the sorted index of
@@ -64,7 +94,7 @@ pair3_cmp(const void * x, const void * y)
 static int
 sorted_rows(fmpz_mat_t A, const fmpz * V, slong m, slong * pos)
 {
-    ref3 * r = malloc(sizeof(ref3) * (m + 1));
+    ref3 * r = malloc(sizeof(ref3) * (2 * m + 1));
     slong i;
 
     if (r == NULL)
@@ -74,12 +104,15 @@ sorted_rows(fmpz_mat_t A, const fmpz * V, slong m, slong * pos)
         r[i].row = V + 3 * i;
         r[i].idx = i;
     }
-    qsort(r, m, sizeof(ref3), ref3_cmp);
-    fmpz_mat_clear(A);
-    fmpz_mat_init(A, m, 3);
+    sort_refs(r, r + m, m);
+    if (fmpz_mat_nrows(A) != m || fmpz_mat_ncols(A) != 3)
+    {
+        fmpz_mat_clear(A);
+        fmpz_mat_init(A, m, 3);
+    }
     for (i = 0; i < m; i++)
     {
-        _fmpz_vec_set(WC_ROW(A, i), r[i].row, 3);
+        set3(WC_ROW(A, i), r[i].row);
         if (pos != NULL)
             pos[r[i].idx] = i;
     }
@@ -87,16 +120,47 @@ sorted_rows(fmpz_mat_t A, const fmpz * V, slong m, slong * pos)
     return 1;
 }
 
+/* The face of C's fan of m rays at index f: 0, the m rays, the m 2-faces,
+   the cone.  */
+static slong
+face_nrays(slong f, slong m)
+{
+    return f == 0 ? 0 : f <= m ? 1 : f <= 2 * m ? 2 : m;
+}
+
+/* 1 when C already has the shape of a pointed 3-D fan of m rays (the
+   previous answer, often): its matrices and face arrays are then kept and
+   every entry set again, instead of freed and allocated.  A face of
+   nrays rays has room for nrays indices, whoever set it.  */
 static int
-set_face(wc_face_struct * F, slong dim, slong n, slong a, slong b)
+fan_shaped(const wc_cone_t C, slong m)
+{
+    slong f;
+
+    if (C->d != 3 || C->nfaces != 2 * m + 2 || C->faces == NULL
+        || fmpz_mat_nrows(C->rays) != m || fmpz_mat_nrows(C->ineqs) != m
+        || fmpz_mat_ncols(C->rays) != 3 || fmpz_mat_ncols(C->ineqs) != 3
+        || fmpz_mat_nrows(C->eqs) != 0 || fmpz_mat_nrows(C->lines) != 0)
+        return 0;
+    for (f = 0; f < C->nfaces; f++)
+        if (C->faces[f].nrays != face_nrays(f, m)
+            || (f > 0 && C->faces[f].rays == NULL))
+            return 0;
+    return 1;
+}
+
+/* Face F of dimension dim and n rays (a, b when n <= 2, else 0 .. n-1),
+   its index array allocated unless keep.  */
+static int
+put_face(wc_face_struct * F, int keep, slong dim, slong n, slong a,
+         slong b)
 {
     slong i;
 
     F->dim = dim;
     F->nrays = n;
     F->included = 1;
-    F->rays = flint_malloc(sizeof(slong) * (n + 1));
-    if (F->rays == NULL)
+    if (!keep && (F->rays = flint_malloc(sizeof(slong) * (n + 1))) == NULL)
         return 0;
     if (n == 1)
         F->rays[0] = a;
@@ -111,52 +175,77 @@ set_face(wc_face_struct * F, slong dim, slong n, slong a, slong b)
     return 1;
 }
 
+/* The 2-faces of C, faces m + 1 .. 2m: the pairs of cyclically
+   consecutive rays (sorted indices pos), in lexicographic order, in
+   O(m): each index is the smaller of at most two pairs.  nb: 2m slots.  */
+static int
+put_edges(wc_cone_t C, int keep, const slong * pos, slong m, slong * nb)
+{
+    slong i, a, f = m + 1;
+    int ok = 1;
+
+    for (i = 0; i < 2 * m; i++)
+        nb[i] = -1;
+    for (i = 0; i < m; i++)
+    {
+        slong x = pos[i], y = pos[(i + 1) % m];
+
+        a = FLINT_MIN(x, y);
+        nb[2 * a + (nb[2 * a] >= 0)] = FLINT_MAX(x, y);
+    }
+    for (a = 0; a < m && ok; a++)
+    {
+        slong b0 = nb[2 * a], b1 = nb[2 * a + 1];
+
+        if (b1 >= 0 && b1 < b0)
+        {
+            b1 = b0;
+            b0 = nb[2 * a + 1];
+        }
+        if (b0 >= 0)
+            ok = put_face(C->faces + f++, keep, 2, 2, a, b0);
+        if (b1 >= 0 && ok)
+            ok = put_face(C->faces + f++, keep, 2, 2, a, b1);
+    }
+    return ok;
+}
+
 int
 _wc_cone3_set_fan(wc_cone_t C, const _wc_fan3_t F, int polar)
 {
     slong m = F->m, i, f = 0;
-    slong * pos = malloc(sizeof(slong) * (m + 1));
-    pair3 * P = malloc(sizeof(pair3) * (m + 1));
-    int ok = pos != NULL && P != NULL;
+    slong * pos = malloc(sizeof(slong) * (3 * m + 1));
+    int keep = fan_shaped(C, m), ok = pos != NULL;
 
-    wc_cone_set_empty(C);
+    if (!keep)
+        wc_cone_set_empty(C);
     /* Cone: rays R_i, facet i holds R_i and R_{i+1}.  Polar: rays F's
        facets, and facet F.rays_{i+1} holds F.facets_i and F.facets_{i+1}:
        the same cyclic pairs.  */
     ok = ok && sorted_rows(C->rays, polar ? F->facets : F->rays, m, pos)
         && sorted_rows(C->ineqs, polar ? F->rays : F->facets, m, NULL);
-    C->faces = ok ? flint_calloc(2 * m + 2, sizeof(wc_face_struct)) : NULL;
-    if (C->faces == NULL)
+    if (ok && !keep)
+        C->faces = flint_calloc(2 * m + 2, sizeof(wc_face_struct));
+    if (!ok || C->faces == NULL)
         goto fail;
-    for (i = 0; i < m; i++)
-    {
-        slong a = pos[i], b = pos[(i + 1) % m];
-
-        P[i].a = FLINT_MIN(a, b);
-        P[i].b = FLINT_MAX(a, b);
-    }
-    qsort(P, m, sizeof(pair3), pair3_cmp);
     C->nfaces = 2 * m + 2;
-    ok = set_face(C->faces + f++, 0, 0, 0, 0);
+    ok = put_face(C->faces + f++, keep, 0, 0, 0, 0);
     for (i = 0; i < m && ok; i++)
-        ok = set_face(C->faces + f++, 1, 1, i, 0);
-    for (i = 0; i < m && ok; i++)
-        ok = set_face(C->faces + f++, 2, 2, P[i].a, P[i].b);
-    ok = ok && set_face(C->faces + f++, 3, m, 0, 0);
+        ok = put_face(C->faces + f++, keep, 1, 1, i, 0);
+    ok = ok && put_edges(C, keep, pos, m, pos + m);
+    f = 2 * m + 1;
+    ok = ok && put_face(C->faces + f, keep, 3, m, 0, 0);
     if (!ok)
         goto fail;
     C->empty = 0;
     C->dim = 3;
     C->lineality_dim = 0;
     free(pos);
-    free(P);
     return WC_OK;
 
 fail:
-    C->nfaces = f;      /* the faces set so far, for wc_cone_set_empty */
     wc_cone_set_empty(C);
     free(pos);
-    free(P);
     return WC_EINTERNAL;
 }
 
@@ -166,7 +255,7 @@ one_face(wc_cone_t C, slong dim)
 {
     C->faces = flint_malloc(sizeof(wc_face_struct));
     C->nfaces = 1;
-    set_face(C->faces, dim, 0, 0, 0);
+    put_face(C->faces, 0, dim, 0, 0, 0);
     C->empty = 0;
 }
 

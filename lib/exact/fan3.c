@@ -189,7 +189,7 @@ sort_idx(int (* cmp)(void *, slong, slong), void * c, slong * x,
 static int
 inner(fan_ctx * c, slong x, slong y, fmpz * w)
 {
-    _wc_zvec3_cross(w, GV(c, x), GV(c, y));
+    _wc_zvec3_cross_fast(w, GV(c, x), GV(c, y));
     return _wc_zvec3_dot_sgn_fast(w, c->qx + 3 * y, c->t) > 0;
 }
 
@@ -211,14 +211,14 @@ farthest(fan_ctx * c, const fmpz * q, const slong * x, slong p)
     fmpz_init(ns);
     fmpz_init(l);
     fmpz_init(r);
-    _fmpz_vec_dot(qs, q, GV(c, x[0]), 3);
-    _fmpz_vec_dot(ns, GV(c, x[0]), GV(c, x[0]), 3);
+    _wc_zvec3_dot_fast(qs, q, GV(c, x[0]));
+    _wc_zvec3_dot_fast(ns, GV(c, x[0]), GV(c, x[0]));
     ss = fmpz_sgn(qs);
     for (i = 1; i < p; i++)
     {
         int far, have = 0;
 
-        _fmpz_vec_dot(qa, q, GV(c, x[i]), 3);
+        _wc_zvec3_dot_fast(qa, q, GV(c, x[i]));
         sa = fmpz_sgn(qa);
         if (sa != ss)
             far = sa < ss;
@@ -227,12 +227,10 @@ farthest(fan_ctx * c, const fmpz * q, const slong * x, slong p)
         else
         {
             have = 1;
-            _fmpz_vec_dot(na, GV(c, x[i]), GV(c, x[i]), 3);
-            fmpz_mul(l, qa, qa);
-            fmpz_mul(l, l, ns);
-            fmpz_mul(r, qs, qs);
-            fmpz_mul(r, r, na);
-            far = sa > 0 ? fmpz_cmp(l, r) < 0 : fmpz_cmp(l, r) > 0;
+            _wc_zvec3_dot_fast(na, GV(c, x[i]), GV(c, x[i]));
+            int cm = _wc_z_sqmul_cmp(qa, ns, qs, na, l, r);
+
+            far = sa > 0 ? cm < 0 : cm > 0;
         }
         if (far)
         {
@@ -242,7 +240,7 @@ farthest(fan_ctx * c, const fmpz * q, const slong * x, slong p)
             if (have)
                 fmpz_swap(ns, na);
             else
-                _fmpz_vec_dot(ns, GV(c, x[i]), GV(c, x[i]), 3);
+                _wc_zvec3_dot_fast(ns, GV(c, x[i]), GV(c, x[i]));
         }
     }
     fmpz_clear(qa);
@@ -262,7 +260,7 @@ spans(const fmpz * G, slong k, fmpz * w, fmpz_t t)
 
     for (i = 1; i < k; i++)
     {
-        _wc_zvec3_cross(w, G, G + 3 * i);
+        _wc_zvec3_cross_fast(w, G, G + 3 * i);
         if (!_fmpz_vec_is_zero(w, 3))
             break;
     }
@@ -398,12 +396,20 @@ fill(_wc_fan3_t F, const fmpz * G, const slong * S, slong m, fmpz_t t)
     F->facets = _fmpz_vec_init(3 * m);
     for (i = 0; i < m; i++)
     {
-        fmpz * h = F->facets + 3 * i;
+        fmpz * h = F->facets + 3 * i, * r = F->rays + 3 * i;
+        const fmpz * g = G + 3 * S[i];
 
-        _fmpz_vec_set(F->rays + 3 * i, G + 3 * S[i], 3);
-        _wc_zvec3_cross(h, G + 3 * S[(i + 1) % m], G + 3 * S[i]);
-        _fmpz_vec_content(t, h, 3);
-        _fmpz_vec_scalar_divexact_fmpz(h, h, 3, t);
+        /* r is 0 (fresh): word entries copy as words.  */
+        if (!COEFF_IS_MPZ(g[0]) && !COEFF_IS_MPZ(g[1]) && !COEFF_IS_MPZ(g[2]))
+        {
+            r[0] = g[0];
+            r[1] = g[1];
+            r[2] = g[2];
+        }
+        else
+            _fmpz_vec_set(r, g, 3);
+        _wc_zvec3_cross_fast(h, G + 3 * S[(i + 1) % m], G + 3 * S[i]);
+        _wc_zvec3_primitive_fast(h, t);
     }
 }
 
@@ -511,7 +517,7 @@ chart_fan(_wc_fan3_t F, const fmpz * G, slong k, const fmpz * d)
     {
         for (i = 0; i < k; i++)
         {
-            _fmpz_vec_dot(c.dg + i, d, G + 3 * i, 3);
+            _wc_zvec3_dot_fast(c.dg + i, d, G + 3 * i);
             x[i] = i;
         }
         sort_idx(chart_cmp, &c, x, x + k, k);
@@ -637,7 +643,7 @@ _wc_fan3(_wc_fan3_t F, const fmpz * G, slong k)
     }
     /* Rank 3 iff some generator leaves the plane of q and g0.  */
     for (i = 0; i < k; i++)
-        _wc_zvec3_cross(c.qx + 3 * i, q, G + 3 * i);
+        _wc_zvec3_cross_fast(c.qx + 3 * i, q, G + 3 * i);
     for (i = 0; i < k && _fmpz_vec_is_zero(c.qx + 3 * i, 3); i++)
         ;
     if (i < k)

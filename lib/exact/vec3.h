@@ -31,4 +31,21 @@ int _wc_zvec3_dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t);
    t is scratch only (it does not hold a . b afterwards).  */
 int _wc_zvec3_dot_sgn_fast(const fmpz * a, const fmpz * b, fmpz_t t);
 
+/* c := a x b and r := a . b, in 128-bit integers when no entry of a or b
+   is a GMP integer (the same values as _wc_zvec3_cross and
+   _wc_zvec3_dot_sgn).  c must not alias a or b.  */
+void _wc_zvec3_cross_fast(fmpz * c, const fmpz * a, const fmpz * b);
+void _wc_zvec3_dot_fast(fmpz_t r, const fmpz * a, const fmpz * b);
+
+/* h := h divided by the gcd of its entries (nothing when h is 0), as
+   zvec3set.h's _wc_zvec3_primitive does, but in
+   words when no entry is a GMP integer; t is scratch.  */
+void _wc_zvec3_primitive_fast(fmpz * h, fmpz_t t);
+
+/* The sign of a^2 b - c^2 d (-1, 0, 1; the comparison of two squared
+   cosines), in 192-bit words when every argument is a word integer and
+   b, d >= 0; l and r are scratch.  */
+int _wc_z_sqmul_cmp(const fmpz_t a, const fmpz_t b, const fmpz_t c,
+                    const fmpz_t d, fmpz_t l, fmpz_t r);
+
 #endif
