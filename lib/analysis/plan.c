@@ -201,14 +201,24 @@ members_count(members * M, slong w, ulong x, int sign)
 {
     slong b;
 
-    for (b = 0; b < M->levels && x != 0; b++)
-    {
-        ulong * c = M->ctr + w * M->levels + b;
-        ulong carry = sign > 0 ? *c & x : ~*c & x;
+    ulong * c = M->ctr + w * M->levels;
 
-        *c ^= x;
-        x = carry;
-    }
+    if (sign > 0)
+        for (b = 0; b < M->levels; b++)
+        {
+            ulong carry = c[b] & x;
+
+            c[b] ^= x;
+            x = carry;
+        }
+    else
+        for (b = 0; b < M->levels; b++)
+        {
+            ulong carry = ~c[b] & x;
+
+            c[b] ^= x;
+            x = carry;
+        }
 }
 
 /* The cells of word w whose count is at least 2 (start 1) or nonzero
@@ -277,7 +287,7 @@ members_take(members * M)
 
         if (x == 0)
             continue;
-        for (b = 1; covered && b < M->levels && (x & ~r) != 0; b++)
+        for (b = 1; b < M->levels; b++)
             r |= c[b];
         if ((x & ~r) != 0)
             covered = 0;
