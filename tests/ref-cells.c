@@ -373,6 +373,7 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, const cell_list * L)
 {
     slong m = L->m, total = L->count, i, j;
     key_ref * ref = flint_malloc(sizeof(key_ref) * (total + 1));
+    signed char * s = malloc(m + 1);
 
     for (i = 0; i < total; i++)
     {
@@ -388,7 +389,8 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, const cell_list * L)
     fmpz_mat_clear(A->point);
     fmpz_mat_init(A->point, total, 3);
     A->dim = flint_malloc(sizeof(slong) * (total + 1));
-    A->sign = malloc(total * m + 1);
+    A->kw = WC_CELLS_KEY_WORDS(m);
+    A->key = malloc(sizeof(uint64_t) * (total * A->kw + 1));
     for (i = 0; i < total; i++)
     {
         slong c = ref[i].i;
@@ -396,8 +398,10 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, const cell_list * L)
         _fmpz_vec_set(WC_ROW(A->point, i), L->pt + 3 * c, 3);
         A->dim[i] = L->dim[c];
         for (j = 0; j < m; j++)
-            A->sign[i * m + j] = (signed char) (L->key[c * m + j] - 1);
+            s[j] = (signed char) (L->key[c * m + j] - 1);
+        wc_cells_pack(A->key + i * A->kw, s, m);
     }
+    free(s);
     flint_free(ref);
 }
 

@@ -447,8 +447,8 @@ cell_order(const wc_cells_t A, slong i, slong j)
     if (A->dim[i] != A->dim[j])
         return A->dim[i] < A->dim[j] ? -1 : 1;
     for (q = 0; q < m; q++)
-        if (A->sign[i * m + q] != A->sign[j * m + q])
-            return A->sign[i * m + q] < A->sign[j * m + q] ? -1 : 1;
+        if (_wc_cells_sign(A, i, q) != _wc_cells_sign(A, j, q))
+            return _wc_cells_sign(A, i, q) < _wc_cells_sign(A, j, q) ? -1 : 1;
     return 0;
 }
 
@@ -458,7 +458,7 @@ static void
 check_locate(const wc_cells_t A, const fmpz * x, const char * what)
 {
     slong m = A->nplanes, i, j, found = 0, k;
-    signed char * s = malloc(m + 1);
+    signed char * s = malloc(m + 1), * row = malloc(m + 1);
     fmpq * g = _fmpq_vec_init(3);
     fmpz_t den;
 
@@ -468,11 +468,14 @@ check_locate(const wc_cells_t A, const fmpz * x, const char * what)
         fmpq_set_fmpz_frac(g + j, x + j, den);
     signs_of(s, A->planes, x);
     for (i = 0; i < A->count; i++)
-        if (memcmp(A->sign + i * m, s, m) == 0)
+    {
+        wc_cells_signs(row, A, i);
+        if (memcmp(row, s, m) == 0)
         {
             found++;
             k = i;
         }
+    }
     if (found != 1)
     {
         char * str = zvec_str(x);
@@ -491,6 +494,7 @@ check_locate(const wc_cells_t A, const fmpz * x, const char * what)
     fmpz_clear(den);
     _fmpq_vec_clear(g, 3);
     free(s);
+    free(row);
 }
 
 static void
@@ -498,7 +502,7 @@ check_cells(const wc_cells_t A, const fmpz_mat_t N)
 {
     fmpz_mat_t H;
     slong m, i, q, j, nd[4] = {0, 0, 0, 0};
-    signed char * s;
+    signed char * s, * y_signs;
     sign_bag ref, got;
     fmpz * x = _fmpz_vec_init(3), * y = _fmpz_vec_init(3);
     fmpz_t c;
@@ -515,6 +519,7 @@ check_cells(const wc_cells_t A, const fmpz_mat_t N)
         wctest_fail("point has %ld rows for %ld cells",
                     (long) fmpz_mat_nrows(A->point), (long) A->count);
     s = malloc(m + 1);
+    y_signs = malloc(m + 1);
 
     /* Every cell: its point, signs, dimension; the order.  */
     for (i = 0; i < A->count; i++)
@@ -532,7 +537,8 @@ check_cells(const wc_cells_t A, const fmpz_mat_t N)
         if (d > 0 && !fmpz_is_one(c))
             wctest_fail("cell %ld: the point is not primitive", (long) i);
         signs_of(s, H, p);
-        if (memcmp(s, A->sign + i * m, m) != 0)
+        wc_cells_signs(y_signs, A, i);
+        if (memcmp(s, y_signs, m) != 0)
             wctest_fail("cell %ld: stored signs differ from its point's",
                         (long) i);
         if (d != 3 - rank_of_zero_planes(H, s) && !(d == 0 && is_zero3(p)))
@@ -555,7 +561,10 @@ check_cells(const wc_cells_t A, const fmpz_mat_t N)
     reference_cells(&ref, H);
     bag_unique(&ref);
     for (i = 0; i < A->count; i++)
-        bag_add(&got, A->sign + i * m);
+    {
+        wc_cells_signs(y_signs, A, i);
+        bag_add(&got, y_signs);
+    }
     bag_unique(&got);
     if (got.n != A->count)
         wctest_fail("repeated sign vectors among %ld cells", (long) A->count);
@@ -619,6 +628,7 @@ check_cells(const wc_cells_t A, const fmpz_mat_t N)
     }
 
     free(s);
+    free(y_signs);
     fmpz_mat_clear(H);
     fmpz_clear(c);
     _fmpz_vec_clear(x, 3);

@@ -123,12 +123,14 @@ same_cells(const wc_cells_t A, const wc_cells_t B, const char * what)
                         what, (long) i, (long) A->dim[i], (long) B->dim[i]);
         if (!_fmpz_vec_equal(A->point->rows[i], B->point->rows[i], 3))
             wctest_fail("%s: cell %ld: the points differ", what, (long) i);
-        if (memcmp(A->sign + i * m, B->sign + i * m, m) != 0)
+        if (A->kw != B->kw
+            || memcmp(_wc_cells_key(A, i), _wc_cells_key(B, i),
+                      sizeof(uint64_t) * A->kw) != 0)
             wctest_fail("%s: cell %ld: the signs differ", what, (long) i);
         for (p = 0; p < m; p++)
         {
             _fmpz_vec_dot(t, A->planes->rows[p], A->point->rows[i], 3);
-            if (fmpz_sgn(t) != A->sign[i * m + p])
+            if (fmpz_sgn(t) != _wc_cells_sign(A, i, p))
                 wctest_fail("%s: cell %ld: the sign on plane %ld is not "
                             "that of its point", what, (long) i, (long) p);
         }
@@ -154,7 +156,7 @@ check_bits(const wc_cells_t A)
             for (i = 0; i < X.words * FLINT_BITS; i++)
             {
                 int bit = (int) ((b[i / FLINT_BITS] >> (i % FLINT_BITS)) & 1);
-                int want = i < A->count && A->sign[i * m + p] == s;
+                int want = i < A->count && _wc_cells_sign(A, i, p) == s;
 
                 if (bit != want)
                     wctest_fail("bits: plane %ld sign %ld cell %ld: %d, "

@@ -410,7 +410,7 @@ static void
 compare(const leaves * L, const wc_cells_t A, const planes * P)
 {
     slong m = P->n, i, p, j, k, * order, * off, * ray;
-    signed char * sign = malloc((size_t) (m + 1));
+    signed char * sign = malloc((size_t) (m + 1)), * table;
     fmpz s[3];
     fmpz_t d;
     wc_error_t err;
@@ -427,7 +427,9 @@ compare(const leaves * L, const wc_cells_t A, const planes * P)
     order = malloc(sizeof(slong) * (A->count + 1));
     for (i = 0; i < A->count; i++)
         order[i] = i;
-    sort_sign = A->sign;
+    sort_sign = table = malloc((size_t) A->count * m + 1);
+    for (i = 0; i < A->count; i++)
+        wc_cells_signs(table + i * m, A, i);
     sort_m = m;
     qsort(order, A->count, sizeof(slong), by_sign);
     for (i = 0; i < L->n; i++)
@@ -445,12 +447,12 @@ compare(const leaves * L, const wc_cells_t A, const planes * P)
         {
             slong mid = (lo + hi) / 2;
 
-            if (memcmp(A->sign + order[mid] * m, sign, (size_t) m) < 0)
+            if (memcmp(table + order[mid] * m, sign, (size_t) m) < 0)
                 lo = mid + 1;
             else
                 hi = mid;
         }
-        if (lo == A->count || memcmp(A->sign + order[lo] * m, sign,
+        if (lo == A->count || memcmp(table + order[lo] * m, sign,
                                      (size_t) m) != 0)
             wctest_fail("leaf %ld: no cell has its sign vector", (long) i);
         c = order[lo];
@@ -471,6 +473,7 @@ compare(const leaves * L, const wc_cells_t A, const planes * P)
     }
     free(order);
     free(sign);
+    free(table);
     flint_free(off);
     flint_free(ray);
     for (j = 0; j < 3; j++)

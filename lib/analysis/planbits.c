@@ -25,8 +25,7 @@
 
 #define BITS(X, p, s) ((X)->bits + (3 * (p) + (s) + 1) * (X)->words)
 
-#if FLINT_BITS == 64 && defined(__BYTE_ORDER__) \
-    && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+#if FLINT_BITS == 64
 #define FAST_BITS 1
 
 /* A[j] bit i := A[i] bit j, a 64 x 64 bit matrix in place: six rounds
@@ -46,31 +45,45 @@ transpose64(ulong * A)
         }
 }
 
-/* neg, pos := the planes p0 .. p0 + np0 (at most 64) where the n (at most
-   64) rows of signs from s (np bytes apart) are - and +, transposed: bit
-   i of neg[j] for row i and plane p0 + j.  Eight signs at a time: the
-   sign bit and the low bit of each byte, gathered by a multiplication
-   (byte k's low bit to bit 56 + k).  */
-static void
-block_bits(ulong * neg, ulong * pos, const signed char * s, slong np,
-           slong n, slong np0)
+/* Bit t of x := bit 2 t of x (the odd bits of x zero).  */
+static inline ulong
+even_bits(ulong x)
 {
-    const ulong lo = UWORD(0x0101010101010101);
-    const ulong gather = UWORD(0x0102040810204080);
-    slong i, t;
+    x = (x | (x >> 1)) & UWORD(0x3333333333333333);
+    x = (x | (x >> 2)) & UWORD(0x0F0F0F0F0F0F0F0F);
+    x = (x | (x >> 4)) & UWORD(0x00FF00FF00FF00FF);
+    x = (x | (x >> 8)) & UWORD(0x0000FFFF0000FFFF);
+    return (x | (x >> 16)) & UWORD(0x00000000FFFFFFFF);
+}
+
+/* neg, pos := the planes p .. p + 63 (p a multiple of 64) where the n
+   (at most 64) cells from cell lo are - and +, transposed: bit i of
+   neg[63 - j] for cell lo + i and plane p + j.  A key word holds 32
+   planes, sign + 1 in two bits, plane j's low bit at bit 62 - 2 j: its
+   - are the fields 00, its + the fields 10; gathering the even bits puts
+   plane j at bit 31 - j, and the two words of the 64 planes make one
+   row, plane j at bit 63 - j.  */
+static void
+block_bits(ulong * neg, ulong * pos, const wc_cells_t A, slong lo, slong n,
+           slong p)
+{
+    const ulong even = UWORD(0x5555555555555555);
+    slong i, kw = A->kw, w0 = p / WC_CELLS_KEY_PLANES;
 
     for (i = 0; i < 64; i++)
     {
         ulong rn = 0, rp = 0;
 
-        for (t = 0; t < np0 && i < n; t += 8)
+        if (i < n)
         {
-            ulong v = 0, vn;
+            const uint64_t * k = _wc_cells_key(A, lo + i) + w0;
+            ulong k0 = k[0], k1 = w0 + 1 < kw ? k[1] : 0;
+            ulong l0 = k0 & even, h0 = (k0 >> 1) & even;
+            ulong l1 = k1 & even, h1 = (k1 >> 1) & even;
 
-            memcpy(&v, s + i * np + t, FLINT_MIN(8, np0 - t));
-            vn = (v >> 7) & lo;
-            rn |= ((vn * gather) >> 56) << t;
-            rp |= (((v & lo & ~vn) * gather) >> 56) << t;
+            rn = (even_bits(~(l0 | h0) & even) << 32)
+                | even_bits(~(l1 | h1) & even);
+            rp = (even_bits(h0) << 32) | even_bits(h1);
         }
         neg[i] = rn;
         pos[i] = rp;
@@ -111,25 +124,26 @@ _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
         {
             slong np0 = FLINT_MIN(64, np - p), j;
 
-            block_bits(neg, pos, A->sign + lo * np + p, np, n, np0);
+            block_bits(neg, pos, A, lo, n, p);
             for (j = 0; j < np0; j++)
             {
-                BITS(X, p + j, -1)[w] = neg[j];
-                BITS(X, p + j, 1)[w] = pos[j];
-                BITS(X, p + j, 0)[w] = ~(neg[j] | pos[j]) & valid;
+                BITS(X, p + j, -1)[w] = neg[63 - j];
+                BITS(X, p + j, 1)[w] = pos[63 - j];
+                BITS(X, p + j, 0)[w] = ~(neg[63 - j] | pos[63 - j]) & valid;
             }
         }
         (void) i;
 #else
         for (p = 0; p < np; p++)
         {
-            const signed char * s = A->sign + lo * np + p;
             ulong neg = 0, pos = 0;
 
             for (i = 0; i < n; i++)
             {
-                neg |= (ulong) (s[i * np] < 0) << i;
-                pos |= (ulong) (s[i * np] > 0) << i;
+                int s = _wc_cells_sign(A, lo + i, p);
+
+                neg |= (ulong) (s < 0) << i;
+                pos |= (ulong) (s > 0) << i;
             }
             BITS(X, p, -1)[w] = neg;
             BITS(X, p, 1)[w] = pos;

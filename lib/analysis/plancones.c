@@ -244,7 +244,6 @@ int
 _wc_cone_key_contains(const wc_cone_key * K, const wc_cells_t A, slong i,
                       const fmpq * g)
 {
-    const signed char * s = A->sign + i * A->nplanes;
     slong j;
     int strict = 1;
 
@@ -253,11 +252,11 @@ _wc_cone_key_contains(const wc_cone_key * K, const wc_cells_t A, slong i,
     if (!K->usable)
         return wc_cone_contains(K->C, g);
     for (j = 0; j < K->ne; j++)
-        if (s[K->plane[K->nf + j]] != 0)
+        if (_wc_cells_sign(A, i, K->plane[K->nf + j]) != 0)
             return 0;
     for (j = 0; j < K->nf; j++)
     {
-        int t = K->orient[j] * s[K->plane[j]];
+        int t = K->orient[j] * _wc_cells_sign(A, i, K->plane[j]);
 
         if (t > 0)
             return 0;

@@ -204,21 +204,19 @@ tight_box(unsigned char * T, const wc_cells_t A, const slong * idx,
     memset(T, 0, m);
     for (i = 0; i < len; i++)
         if (member[idx[i]])
-        {
-            const signed char * s = A->sign + idx[i] * m;
-
             for (q = 0; q < m; q++)
-                T[q] |= (unsigned char) (1 << (s[q] + 1));
-        }
+                T[q] |= (unsigned char) (1 << (_wc_cells_sign(A, idx[i], q)
+                                               + 1));
 }
 
+/* 1 when cell i lies in the box T.  */
 static int
-in_box(const unsigned char * T, const signed char * s, slong m)
+in_box(const unsigned char * T, const wc_cells_t A, slong i)
 {
     slong q;
 
-    for (q = 0; q < m; q++)
-        if (!(T[q] & (1 << (s[q] + 1))))
+    for (q = 0; q < A->nplanes; q++)
+        if (!(T[q] & (1 << (_wc_cells_sign(A, i, q) + 1))))
             return 0;
     return 1;
 }
@@ -325,7 +323,7 @@ find_walls(splitter * S, slong lo, slong hi)
                 || (member[e] != 0) == (member[c] != 0))
                 continue;
             for (q = 0; q < m; q++)
-                if (A->sign[c * m + q] == 0 && q != I->plane[e])
+                if (_wc_cells_sign(A, c, q) == 0 && q != I->plane[e])
                     S->wall[q]++;
         }
     }
@@ -354,11 +352,11 @@ best_split(unsigned char * part, splitter * S, slong lo, slong hi,
     memset(S->cb, 0, sizeof(slong) * 3 * m);
     for (i = lo; i < hi; i++)
     {
-        const signed char * s = S->A->sign + S->idx[i] * m;
         slong * c3 = S->member[S->idx[i]] ? S->cm : S->cb;
 
         for (j = 0; j < ncp; j++)
-            c3[3 * S->cp[j] + s[S->cp[j]] + 1]++;
+            c3[3 * S->cp[j] + _wc_cells_sign(S->A, S->idx[i], S->cp[j])
+               + 1]++;
     }
     for (j = 0; j < ncp; j++)
     {
@@ -444,7 +442,7 @@ split_boxes(_wc_box_list_struct * B, _wc_incidence_struct * I,
         {
             /* The non-members in T.  */
             for (i = lo, c = lo; i < hi; i++)
-                if (member[S.idx[i]] || in_box(T, A->sign + S.idx[i] * m, m))
+                if (member[S.idx[i]] || in_box(T, A, S.idx[i]))
                 {
                     nb += !member[S.idx[i]];
                     S.idx[c++] = S.idx[i];
@@ -470,7 +468,7 @@ split_boxes(_wc_box_list_struct * B, _wc_incidence_struct * I,
            other signs on p are non-members and go.  */
         for (i = lo; i < hi; i++)
         {
-            int bit = 1 << (A->sign[S.idx[i] * m + p] + 1);
+            int bit = 1 << (_wc_cells_sign(A, S.idx[i], p) + 1);
 
             c = S.idx[i];
             if (part & bit)
@@ -618,15 +616,16 @@ extreme_rays(fmpq_mat_t R, const wc_cells_t A, const unsigned char * closed,
 
     for (k = 0; k < nc && ne >= 0; k++)
     {
-        const signed char * s = A->sign + cand[k] * m;
         slong z = 0;
 
         for (j = 0; j < nn; j++)
         {
+            int sq = _wc_cells_sign(A, cand[k], cons[j]);
+
             q = cons[j];
-            if (!(closed[q] & (1 << (s[q] + 1))))
+            if (!(closed[q] & (1 << (sq + 1))))
                 break;
-            z += s[q] == 0;
+            z += sq == 0;
         }
         if (j == nn && z >= 2)
         {

@@ -50,12 +50,11 @@ sector_rays(slong * r, const wc_cells_t A, slong i, signed char * s,
             fmpz * w)
 {
     slong m = A->nplanes, p, q;
-    const signed char * si = A->sign + i * m;
     const fmpz * x = WC_ROW(A->point, i), * h;
     fmpz * u = w, * lo = w + 3, * hi = w + 6, * c = w + 9, * t = w + 12;
     int have = 0;
 
-    for (p = 0; p < m && si[p] != 0; p++)
+    for (p = 0; p < m && _wc_cells_sign(A, i, p) != 0; p++)
         ;
     if (p == m)
         return 0;
@@ -121,10 +120,11 @@ ray_pairs(slong * pr, const wc_cells_t A, signed char * s, fmpz * w)
         if (!sector_rays(r, A, i, s, w))
             return -1;
         put_pair(pr, &k, i, r, 2);
-        for (p = 0; A->sign[i * m + p] != 0; p++)
+        wc_cells_signs(s, A, i);
+        for (p = 0; p < m && s[p] != 0; p++)
             ;
-        for (c = 0; c < m; c++)
-            s[c] = A->sign[i * m + c];
+        if (p == m)
+            return -1;
         for (side = -1; side <= 1; side += 2)
         {
             s[p] = (signed char) side;

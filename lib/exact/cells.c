@@ -51,18 +51,15 @@ typedef __int128 wide;
 #endif
 
 /* ---------------------------------------------------------------------
-   The cell list under construction.  Signs are kept as keys: sign + 1
-   in two bits per plane, KEY_PLANES planes to a 64-bit word, the first
-   plane in the highest bits, so that comparing the words as unsigned
-   integers orders keys as their sign vectors (- < 0 < +).  The key of
+   The cell list under construction.  Signs are kept as keys (cells.h),
+   the cells' own form: sign + 1 in two bits per plane.  The key of
    the current face and its hash are kept up to date from the planes the
    walk says have changed: the hash is the XOR of one random word per
    plane and sign (Zobrist hashing), so a face costs O(changed) before
    its lookup, and a chamber met again one comparison of its key.  The
-   keys take a quarter of the bytes of the sign vectors; these are
-   written once, in the sorted order, at the end.  */
+   keys are copied once, in the sorted order, at the end.  */
 
-#define KEY_PLANES 32
+#define KEY_PLANES WC_CELLS_KEY_PLANES
 #define KEY_SHIFT(q) (62 - 2 * ((q) % KEY_PLANES))
 
 /* The sign + 1 of plane q in key k.  */
@@ -97,7 +94,7 @@ cell_list_init(cell_list * L, slong m, slong cap)
     slong i;
 
     L->m = m;
-    L->kw = (m + KEY_PLANES - 1) / KEY_PLANES;
+    L->kw = WC_CELLS_KEY_WORDS(m);
     L->cap = cap;
     L->count = 0;
     L->key = malloc(sizeof(uint64_t) * ((size_t) cap * L->kw + 1));
@@ -413,7 +410,8 @@ wc_cells_init(wc_cells_t A)
     A->count = 0;
     fmpz_mat_init(A->point, 0, 3);
     A->dim = NULL;
-    A->sign = NULL;
+    A->kw = 0;
+    A->key = NULL;
 }
 
 void
@@ -422,7 +420,7 @@ wc_cells_clear(wc_cells_t A)
     fmpz_mat_clear(A->planes);
     fmpz_mat_clear(A->point);
     flint_free(A->dim);
-    free(A->sign);
+    free(A->key);
     wc_cells_init(A);
 }
 
@@ -528,55 +526,45 @@ key_sort(key_ref * r, key_ref * tmp, slong n, const uint64_t * key,
     return r;
 }
 
-/* The signs of four planes, a byte of a key, as four sign bytes.  */
+/* key[i] := key[src[i]] (kw words each) for i < n, src a permutation,
+   in place: cycle by cycle, with one key of scratch (tmp); src is left
+   the identity.  */
 static void
-unpack_table(uint32_t * tab)
+permute_keys(uint64_t * key, slong * src, slong n, slong kw, uint64_t * tmp)
 {
-    unsigned int b, j;
+    slong i, j, k;
 
-    for (b = 0; b < 256; b++)
+    for (i = 0; i < n; i++)
     {
-        unsigned char c[4];
-
-        for (j = 0; j < 4; j++)
-            c[j] = (unsigned char) (((b >> (6 - 2 * j)) & 3) - 1);
-        memcpy(tab + b, c, 4);
+        if (src[i] == i)
+            continue;
+        memcpy(tmp, key + i * kw, sizeof(uint64_t) * kw);
+        for (j = i; src[j] != i; j = k)
+        {
+            k = src[j];
+            memcpy(key + j * kw, key + k * kw, sizeof(uint64_t) * kw);
+            src[j] = j;
+        }
+        memcpy(key + j * kw, tmp, sizeof(uint64_t) * kw);
+        src[j] = j;
     }
-}
-
-/* sign[0 .. m) := the signs of key k (tab from unpack_table).  */
-static void
-key_unpack(signed char * sign, const uint64_t * k, slong m,
-           const uint32_t * tab)
-{
-    slong q, j;
-
-    for (q = 0; q + 4 <= m; q += 4)
-    {
-        j = q % KEY_PLANES;
-        memcpy(sign + q, tab + ((k[q / KEY_PLANES] >> (56 - 2 * j)) & 255),
-               4);
-    }
-    for (; q < m; q++)
-        sign[q] = (signed char) ((int) key_get(k, q) - 1);
 }
 
 /* A := the cells of L on the planes H (taken), sorted by dimension
-   (bucketed), then by key; A's signs are L's keys unpacked in that
-   order.  Returns 0 when out of memory.  */
+   (bucketed), then by key; A takes L's keys, put in that order.
+   Returns 0 when out of memory.  */
 static int
 cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
 {
-    slong m = L->m, kw = L->kw, total = L->count, i, d, start[5] = {0};
+    slong kw = L->kw, total = L->count, i, d, start[5] = {0};
     key_ref * ref = flint_malloc(sizeof(key_ref) * (2 * total + 1));
-    signed char * sign = malloc((size_t) total * m + 1);
+    slong * src = flint_malloc(sizeof(slong) * (total + 1));
     slong * dim = flint_malloc(sizeof(slong) * (total + 1));
-    uint32_t tab[256];
 
-    if (ref == NULL || sign == NULL || dim == NULL)
+    if (ref == NULL || src == NULL || dim == NULL)
     {
         flint_free(ref);
-        free(sign);
+        flint_free(src);
         flint_free(dim);
         return 0;
     }
@@ -591,8 +579,7 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
         r->k0 = L->key[i * kw];
         r->i = i;
     }
-    unpack_table(tab);
-    A->nplanes = m;
+    A->nplanes = L->m;
     fmpz_mat_swap(A->planes, H);
     A->count = total;
     fmpz_mat_clear(A->point);
@@ -605,16 +592,19 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
 
         for (j = 0; j < n; j++, i++)
         {
-            slong c = r[j].i;
-
-            _fmpz_vec_swap(WC_ROW(A->point, i), L->pt + 3 * c, 3);
+            src[i] = r[j].i;
+            _fmpz_vec_swap(WC_ROW(A->point, i), L->pt + 3 * src[i], 3);
             dim[i] = d;
-            key_unpack(sign + i * m, L->key + c * kw, m, tab);
         }
     }
+    /* the scratch key: L->cur, the walk is over */
+    permute_keys(L->key, src, total, kw, L->cur);
     A->dim = dim;
-    A->sign = sign;
+    A->kw = kw;
+    A->key = L->key;
+    L->key = NULL;
     flint_free(ref);
+    flint_free(src);
     return 1;
 }
 
@@ -690,29 +680,49 @@ wc_cells_plane_index(const wc_cells_t A, const fmpz * h)
     return r;
 }
 
-/* A cell to look for: its dimension and signs, among the cells of A.  */
+void
+wc_cells_signs(signed char * s, const wc_cells_t A, slong i)
+{
+    const uint64_t * k = _wc_cells_key(A, i);
+    slong q;
+
+    for (q = 0; q < A->nplanes; q++)
+        s[q] = (signed char) ((int) key_get(k, q) - 1);
+}
+
+void
+wc_cells_pack(uint64_t * key, const signed char * s, slong m)
+{
+    slong q;
+
+    memset(key, 0, sizeof(uint64_t) * WC_CELLS_KEY_WORDS(m));
+    for (q = 0; q < m; q++)
+        key[q / KEY_PLANES] |= (uint64_t) (s[q] + 1) << KEY_SHIFT(q);
+}
+
+/* A cell to look for: its dimension and key, among the cells of A.  */
 typedef struct
 {
     const wc_cells_struct * A;
     slong dim;
-    const signed char * sign;
+    const uint64_t * key;
 }
 cell_key;
 
-/* Order of cells: dimension, then signs (- < 0 < +).  q points into
-   A->dim.  */
+/* Order of cells: dimension, then keys.  q points into A->dim.  */
 static int
 cell_key_cmp(const void * p, const void * q)
 {
     const cell_key * k = p;
     const wc_cells_struct * A = k->A;
-    slong m = A->nplanes, i = (const slong *) q - A->dim, j;
+    slong i = (const slong *) q - A->dim, j;
+    const uint64_t * x = _wc_cells_key(A, i);
 
     if (A->dim[i] != k->dim)
         return k->dim < A->dim[i] ? -1 : 1;
-    for (j = 0; j < m; j++)
-        if (A->sign[i * m + j] != k->sign[j])
-            return k->sign[j] < A->sign[i * m + j] ? -1 : 1;
+    for (j = 0; j < A->kw; j++)
+        if (x[j] != k->key[j])
+            return k->key[j] < x[j] ? -1 : 1;
     return 0;
 }
 
@@ -721,11 +731,19 @@ wc_cells_find(const wc_cells_t A, slong dim, const signed char * sign)
 {
     const slong * hit;
     cell_key key;
+    uint64_t small[8];
+    uint64_t * k = A->kw <= 8 ? small
+        : malloc(sizeof(uint64_t) * (A->kw + 1));
 
+    if (k == NULL)
+        return -1;      /* out of memory: not found */
+    wc_cells_pack(k, sign, A->nplanes);
     key.A = A;
     key.dim = dim;
-    key.sign = sign;
+    key.key = k;
     hit = bsearch(&key, A->dim, A->count, sizeof(slong), cell_key_cmp);
+    if (k != small)
+        free(k);
     return hit == NULL ? -1 : hit - A->dim;
 }
 

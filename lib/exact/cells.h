@@ -28,6 +28,8 @@
 #ifndef WC_CELLS_H
 #define WC_CELLS_H
 
+#include <stdint.h>
+
 #include <flint/fmpz_mat.h>
 
 #include "core/error.h"
@@ -48,12 +50,49 @@ typedef struct
     fmpz_mat_t point;       /* count x 3: a primitive integer point in each
                                cell (the zero vector for the origin) */
     slong * dim;            /* count: 0, 1, 2 or 3 */
-    signed char * sign;     /* count x nplanes sign vectors, row-major:
-                               sign[i * nplanes + p] = sign(h_p . point_i) */
+    slong kw;               /* words per key */
+    uint64_t * key;         /* count x kw: the sign vectors as keys */
 }
 wc_cells_struct;
 
 typedef wc_cells_struct wc_cells_t[1];
+
+/* A cell's sign vector (sign(h_p . point_i) for every plane p) is kept as
+   a key: sign + 1 in two bits per plane, WC_CELLS_KEY_PLANES planes to a
+   64-bit word, the first plane in the highest bits of the first word, the
+   bits past the last plane zero.  Comparing two keys word by word as
+   unsigned integers orders them as their sign vectors (- < 0 < +); equal
+   keys are equal sign vectors.  Read them with _wc_cells_sign (one plane)
+   or wc_cells_signs (the whole vector).  */
+#define WC_CELLS_KEY_PLANES 32
+
+/* Words of a key for m planes.  */
+#define WC_CELLS_KEY_WORDS(m) \
+    (((m) + WC_CELLS_KEY_PLANES - 1) / WC_CELLS_KEY_PLANES)
+
+/* sign(h_p . point_i): -1, 0 or 1.  */
+static inline int
+_wc_cells_sign(const wc_cells_struct * A, slong i, slong p)
+{
+    ulong q = (ulong) p;
+
+    return (int) ((A->key[i * A->kw + q / WC_CELLS_KEY_PLANES]
+                   >> (62 - 2 * (q % WC_CELLS_KEY_PLANES))) & 3) - 1;
+}
+
+/* The key of cell i (A->kw words).  */
+static inline const uint64_t *
+_wc_cells_key(const wc_cells_struct * A, slong i)
+{
+    return A->key + i * A->kw;
+}
+
+/* s[0 .. nplanes) := the sign vector of cell i.  */
+void wc_cells_signs(signed char * s, const wc_cells_t A, slong i);
+
+/* key[0 .. WC_CELLS_KEY_WORDS(m)) := the key of the sign vector s (m
+   entries, each -1, 0 or 1).  */
+void wc_cells_pack(uint64_t * key, const signed char * s, slong m);
 
 void wc_cells_init(wc_cells_t A);
 void wc_cells_clear(wc_cells_t A);

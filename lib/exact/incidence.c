@@ -41,18 +41,30 @@ _wc_incidence_clear(_wc_incidence_t I)
     _wc_incidence_init(I);
 }
 
+/* The hash of cell i's key.  */
+static uint64_t
+key_hash(const uint64_t * k, slong kw)
+{
+    return _wc_hash_bytes((const unsigned char *) k,
+                          (slong) sizeof(uint64_t) * kw);
+}
+
 /* The cell of dimension d with signs t, or -1; slot: a hash table of
-   size slots on the cells of dimensions 2 and 3, h their hashes.  */
+   size slots on the cells of dimensions 2 and 3, h their hashes; tk:
+   scratch for t's key.  */
 static slong
 find_cell(const wc_cells_t A, const slong * slot, slong size,
-          const uint64_t * h, const signed char * t, slong d)
+          const uint64_t * h, const signed char * t, uint64_t * tk, slong d)
 {
-    slong m = A->nplanes, j;
-    uint64_t g = _wc_hash_bytes((const unsigned char *) t, m);
+    slong kw = A->kw, j;
+    uint64_t g;
 
+    wc_cells_pack(tk, t, A->nplanes);
+    g = key_hash(tk, kw);
     for (j = (slong) (g & (size - 1)); slot[j] >= 0; j = (j + 1) & (size - 1))
         if (h[slot[j]] == g && A->dim[slot[j]] == d
-            && memcmp(A->sign + slot[j] * m, t, m) == 0)
+            && memcmp(_wc_cells_key(A, slot[j]), tk,
+                      sizeof(uint64_t) * kw) == 0)
             return slot[j];
     return -1;
 }
@@ -70,6 +82,8 @@ _wc_incidence_build(_wc_incidence_t I, const wc_cells_t A)
     slong * slot;
     uint64_t * h = flint_malloc(sizeof(uint64_t) * (count + 1));
     signed char * t = flint_malloc(m + 1);
+    signed char * row = flint_malloc(m + 1);
+    uint64_t * tk = flint_malloc(sizeof(uint64_t) * (A->kw + 1));
     fmpz * d = _fmpz_vec_init(3);
     fmpz_t x;
     int ok = 1;
@@ -88,8 +102,7 @@ _wc_incidence_build(_wc_incidence_t I, const wc_cells_t A)
     for (i = 0; i < count; i++)
         if (A->dim[i] >= 2)
         {
-            h[i] = _wc_hash_bytes((const unsigned char *) (A->sign + i * m),
-                                  m);
+            h[i] = key_hash(_wc_cells_key(A, i), A->kw);
             for (j = (slong) (h[i] & (size - 1)); slot[j] >= 0;
                  j = (j + 1) & (size - 1))
                 ;
@@ -97,28 +110,27 @@ _wc_incidence_build(_wc_incidence_t I, const wc_cells_t A)
         }
     for (i = 0; i < count; i++)
     {
-        const signed char * s = A->sign + i * m;
-
+        wc_cells_signs(row, A, i);
         I->side[2 * i] = I->side[2 * i + 1] = I->plane[i] = -1;
         I->ray[2 * i] = I->ray[2 * i + 1] = -1;
         I->off[i] = n;
         if (A->dim[i] == 2)
         {
-            memcpy(t, s, m);
+            memcpy(t, row, m);
             for (q = 0; q < m && t[q] != 0; q++)
                 ;
             I->plane[i] = q;
             for (side = 0; side < 2; side++)
             {
                 t[q] = (signed char) (2 * side - 1);
-                I->side[2 * i + side] = find_cell(A, slot, size, h, t, 3);
+                I->side[2 * i + side] = find_cell(A, slot, size, h, t, tk, 3);
                 ok &= I->side[2 * i + side] >= 0;
             }
         }
         else if (A->dim[i] == 1)
             for (p = 0; p < m; p++)
             {
-                if (s[p] != 0)
+                if (row[p] != 0)
                     continue;
                 _wc_zvec3_cross(d, WC_ROW(A->planes, p),
                                 WC_ROW(A->point, i));
@@ -126,12 +138,12 @@ _wc_incidence_build(_wc_incidence_t I, const wc_cells_t A)
                 {
                     slong c;
 
-                    memcpy(t, s, m);
+                    memcpy(t, row, m);
                     for (q = 0; q < m; q++)
-                        if (s[q] == 0 && q != p)
+                        if (row[q] == 0 && q != p)
                             t[q] = (signed char) (side * _wc_zvec3_dot_sgn(
                                 WC_ROW(A->planes, q), d, x));
-                    c = find_cell(A, slot, size, h, t, 2);
+                    c = find_cell(A, slot, size, h, t, tk, 2);
                     if (c < 0)
                     {
                         ok = 0;
@@ -180,6 +192,8 @@ _wc_incidence_build(_wc_incidence_t I, const wc_cells_t A)
     flint_free(slot);
     flint_free(h);
     flint_free(t);
+    flint_free(row);
+    flint_free(tk);
     _fmpz_vec_clear(d, 3);
     fmpz_clear(x);
     return ok;
