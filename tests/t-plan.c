@@ -66,6 +66,83 @@ state_strings(char * out, const wc_plan_strings_t T, ulong S)
     }
 }
 
+/* The index of string b among T's (ASCII-sorted), or -1.  */
+static slong
+string_index(const wc_plan_strings_t T, const char * b)
+{
+    char * const * hit = bsearch(&b, T->strings, T->nstrings,
+                                 sizeof(char *), cmp_str);
+
+    return hit == NULL ? -1 : hit - T->strings;
+}
+
+/* State S's string k of T is that of lost contacts L.  */
+static void
+check_state_string(const wc_plan_strings_t T, slong n, ulong S, ulong L,
+                   slong k)
+{
+    char b[FLINT_BITS + 1];
+    slong j;
+
+    for (j = 0; j < n; j++)
+        b[j] = (L >> j) & 1 ? 's' : (S >> j) & 1 ? 'm' : L != 0 ? 'u' : 's';
+    b[n] = '\0';
+    if (k >= T->state_first[S + 1]
+        || strcmp(T->strings[T->state_str[k]], b) != 0)
+        wctest_fail("n = %ld, state %lu: string %ld is not %s", (long) n,
+                    S, (long) k, b);
+}
+
+/* state_str and contained_in read from their definitions: state S's
+   strings, lost contacts L the nonempty subsets of S in increasing order
+   (as bit masks), then no progress (L empty) unless S is full; a
+   string's witness, the first string made by turning a nonempty subset R
+   of its s letters into u, R in increasing order.  */
+static void
+check_string_tables(const wc_plan_strings_t T, slong n)
+{
+    ulong full = (UWORD(1) << n) - 1, S, L, R;
+    slong i, k = 0, j;
+    char b[FLINT_BITS + 1];
+
+    b[n] = '\0';
+    for (S = 0; S <= full; S++)
+    {
+        if (T->state_first[S] != k)
+            wctest_fail("n = %ld, state %lu: strings from %ld, expected %ld",
+                        (long) n, S, (long) T->state_first[S], (long) k);
+        for (L = 1; L <= S; L++)
+            if ((L & S) == L)
+                check_state_string(T, n, S, L, k++);
+        if (S != full)
+            check_state_string(T, n, S, 0, k++);
+    }
+    if (T->state_first[full + 1] != k)
+        wctest_fail("n = %ld: %ld state strings, expected %ld", (long) n,
+                    (long) T->state_first[full + 1], (long) k);
+    for (i = 0; i < T->nstrings; i++)
+    {
+        const char * s = T->strings[i];
+        ulong smask = 0;
+        slong want = -1;
+
+        for (j = 0; j < n; j++)
+            smask |= (ulong) (s[j] == 's') << j;
+        for (R = 1; R <= smask && want < 0; R++)
+        {
+            if ((R & smask) != R)
+                continue;
+            for (j = 0; j < n; j++)
+                b[j] = (R >> j) & 1 ? 'u' : s[j];
+            want = string_index(T, b);
+        }
+        if (T->contained_in[i] != want)
+            wctest_fail("n = %ld: %s is contained in string %ld, expected "
+                        "%ld", (long) n, s, (long) T->contained_in[i],
+                        (long) want);
+    }
+}
+
 static void
 test_strings(void)
 {
@@ -97,6 +174,7 @@ test_strings(void)
                         " = %ld and n 2^(n-1) = %ld", (long) n,
                         (long) T->nstrings, (long) T->nneeded,
                         (long) (pow3 - (1L << n)), (long) (n << (n - 1)));
+        check_string_tables(T, n);
         /* each needed string has exactly one s */
         for (i = 0; i < T->nneeded; i++)
         {

@@ -33,7 +33,7 @@ wc_plan_strings_clear(wc_plan_strings_t T)
 {
     slong i;
 
-    for (i = 0; i < T->nstrings; i++)
+    for (i = 0; T->strings != NULL && i < T->nstrings; i++)
         free(T->strings[i]);
     free(T->strings);
     free(T->state_first);
@@ -43,44 +43,103 @@ wc_plan_strings_clear(wc_plan_strings_t T)
     memset(T, 0, sizeof(wc_plan_strings_struct));
 }
 
-static int
-str_ptr_cmp(const void * p, const void * q)
+/* A string over {m, s, u} as a number: its letters are digits m = 0,
+   s = 1, u = 2, the first letter the most significant, so that numbers
+   compare as the strings do in ASCII (m < s < u).  digit[i] is the
+   weight 3^(n - 1 - i) of letter i.  */
+static ulong
+state_code(ulong S, ulong L, slong n, const ulong * digit)
 {
-    return strcmp(*(char * const *) p, *(char * const *) q);
-}
-
-static slong
-find_string(const wc_plan_strings_t T, const char * s)
-{
-    char * const * hit = bsearch(&s, T->strings, T->nstrings, sizeof(char *),
-                                 str_ptr_cmp);
-
-    return hit == NULL ? -1 : hit - T->strings;
-}
-
-/* The string of state S with lost contacts L (L empty: no progress).  */
-static char *
-state_string(ulong S, ulong L, slong n)
-{
-    char * s = malloc(n + 1);
+    ulong c = 0;
     slong i;
 
     for (i = 0; i < n; i++)
     {
         ulong b = UWORD(1) << i;
 
-        s[i] = (L & b) ? 's' : (S & b) ? 'm' : L != 0 ? 'u' : 's';
+        /* lost: s; kept: m; not yet: u, or s when nothing was lost */
+        c += digit[i] * ((L & b) ? 1 : (S & b) ? 0 : L != 0 ? 2 : 1);
     }
+    return c;
+}
+
+static void
+code_string(char * s, ulong c, slong n, const ulong * digit)
+{
+    slong i;
+
+    for (i = 0; i < n; i++)
+        s[i] = "msu"[(c / digit[i]) % 3];
     s[n] = '\0';
-    return s;
+}
+
+/* The codes' indices among the strings: index[c] for the code c of a
+   generated string, -1 for the others.  */
+static int
+strings_from_codes(wc_plan_strings_t T, const slong * index, ulong pow3,
+                   const ulong * digit)
+{
+    ulong c;
+    slong j = 0;
+
+    T->strings = malloc(sizeof(char *) * (T->nstrings + 1));
+    if (T->strings == NULL)
+        return 0;
+    for (c = 0; c < pow3; c++)
+        if (index[c] >= 0)
+        {
+            if ((T->strings[j] = malloc(T->n + 1)) == NULL)
+            {
+                T->nstrings = j;
+                return 0;
+            }
+            code_string(T->strings[j++], c, T->n, digit);
+        }
+    return 1;
+}
+
+/* Syntactic redundancy: some nonempty set R of s letters turned into u
+   gives a string of the list; R runs over the subsets of the s letters
+   in increasing order (as a bit mask), so that the string reported as
+   containing it is always the same.  */
+static void
+strings_redundancy(wc_plan_strings_t T, const slong * index,
+                   const ulong * code, const ulong * digit)
+{
+    slong i, k, n = T->n;
+
+    T->nneeded = 0;
+    for (i = 0; i < T->nstrings; i++)
+    {
+        ulong smask = 0, R;
+
+        for (k = 0; k < n; k++)
+            if (T->strings[i][k] == 's')
+                smask |= UWORD(1) << k;
+        T->contained_in[i] = -1;
+        for (R = (UWORD(0) - smask) & smask; R != 0
+             && T->contained_in[i] < 0; R = (R - smask) & smask)
+        {
+            ulong c = code[i];
+
+            for (k = 0; k < n; k++)
+                if ((R >> k) & 1)
+                    c += digit[k];      /* s (1) to u (2) */
+            T->contained_in[i] = index[c];
+        }
+        if (T->contained_in[i] < 0)
+            T->needed[T->nneeded++] = i;
+    }
 }
 
 int
 wc_plan_strings(wc_plan_strings_t T, slong n, wc_error_t err)
 {
-    ulong full, S, L, R;
-    slong cap, count = 0, k, i, j;
-    char ** all;
+    ulong full, S, L, pow3 = 1, digit[FLINT_BITS], c;
+    slong k = 0, i;
+    slong * index = NULL;
+    ulong * code = NULL;
+    int ok;
 
     wc_plan_strings_clear(T);
     if (n < 1 || n > WC_PLAN_MAX_FIXELS)
@@ -89,87 +148,60 @@ wc_plan_strings(wc_plan_strings_t T, slong n, wc_error_t err)
                             WC_PLAN_MAX_FIXELS, (long) n);
     T->n = n;
     full = (UWORD(1) << n) - 1;
-    /* sum over S of 2^|S| = 3^n, plus the no-progress strings */
-    for (cap = 1, i = 0; i < n; i++)
-        cap *= 3;
-    cap += full + 1;
-    all = malloc(sizeof(char *) * cap);
-    for (S = 0; S <= full; S++)
-    {
-        for (L = S; L != 0; L = (L - 1) & S)
-            all[count++] = state_string(S, L, n);
-        if (S != full)
-            all[count++] = state_string(S, 0, n);
-    }
-    /* The same string arises in several states: keep one copy.  */
-    qsort(all, count, sizeof(char *), str_ptr_cmp);
-    for (i = 0, j = 0; i < count; i++)
-    {
-        if (j > 0 && strcmp(all[i], all[j - 1]) == 0)
-            free(all[i]);
-        else
-            all[j++] = all[i];
-    }
-    T->strings = all;
-    T->nstrings = j;
-
-    /* By state, in the order the states generate them.  */
+    for (i = n - 1; i >= 0; i--, pow3 *= 3)
+        digit[i] = pow3;
+    /* every state's strings: sum over S of 2^|S| = 3^n, plus the
+       no-progress strings */
+    index = malloc(sizeof(slong) * (pow3 + 1));
     T->state_first = malloc(sizeof(slong) * (full + 2));
-    T->state_str = malloc(sizeof(slong) * count);
-    for (S = 0, k = 0; S <= full; S++)
+    T->state_str = malloc(sizeof(slong) * (pow3 + full + 1));
+    ok = index != NULL && T->state_first != NULL && T->state_str != NULL;
+    for (c = 0; ok && c < pow3; c++)
+        index[c] = -1;
+    /* By state, in the order the states generate them: first the lost-
+       contact strings (the nonempty submasks L of S, ascending), then
+       the no-progress string.  state_str holds codes until the strings
+       are numbered.  */
+    for (S = 0; ok && S <= full; S++)
     {
         T->state_first[S] = k;
-        /* the nonempty submasks of S in ascending order */
         for (L = (UWORD(0) - S) & S; L != 0; L = (L - S) & S)
-        {
-            char * s = state_string(S, L, n);
-
-            T->state_str[k++] = find_string(T, s);
-            free(s);
-        }
+            T->state_str[k++] = (slong) state_code(S, L, n, digit);
         if (S != full)
-        {
-            char * s = state_string(S, 0, n);
-
-            T->state_str[k++] = find_string(T, s);
-            free(s);
-        }
+            T->state_str[k++] = (slong) state_code(S, 0, n, digit);
     }
-    T->state_first[full + 1] = k;
-
-    /* Syntactic redundancy: some nonempty set R of s letters turned into
-       u gives a string of the list.  */
-    T->contained_in = malloc(sizeof(slong) * T->nstrings);
-    T->needed = malloc(sizeof(slong) * T->nstrings);
-    T->nneeded = 0;
+    if (ok)
     {
-        char * b = malloc(n + 1);
-
-        for (i = 0; i < T->nstrings; i++)
-        {
-            const char * s = T->strings[i];
-            ulong smask = 0;
-
-            for (k = 0; k < n; k++)
-                if (s[k] == 's')
-                    smask |= UWORD(1) << k;
-            T->contained_in[i] = -1;
-            /* the submasks R of smask in increasing order, so that the
-               string reported as containing it is always the same */
-            for (R = 1; R <= smask && T->contained_in[i] < 0; R++)
-            {
-                if ((R & smask) != R)
-                    continue;
-                for (k = 0; k < n; k++)
-                    b[k] = (R >> k) & 1 ? 'u' : s[k];
-                b[n] = '\0';
-                T->contained_in[i] = find_string(T, b);
-            }
-            if (T->contained_in[i] < 0)
-                T->needed[T->nneeded++] = i;
-        }
-        free(b);
+        T->state_first[full + 1] = k;
+        for (i = 0; i < k; i++)
+            index[T->state_str[i]] = 0;
+        T->nstrings = 0;
+        for (c = 0; c < pow3; c++)
+            if (index[c] >= 0)
+                index[c] = T->nstrings++;
+        for (i = 0; i < k; i++)
+            T->state_str[i] = index[T->state_str[i]];
+        code = malloc(sizeof(ulong) * (T->nstrings + 1));
+        T->contained_in = malloc(sizeof(slong) * (T->nstrings + 1));
+        T->needed = malloc(sizeof(slong) * (T->nstrings + 1));
+        ok = code != NULL && T->contained_in != NULL && T->needed != NULL
+            && strings_from_codes(T, index, pow3, digit);
+    }
+    if (ok)
+    {
+        for (c = 0; c < pow3; c++)
+            if (index[c] >= 0)
+                code[index[c]] = c;
+        strings_redundancy(T, index, code, digit);
+    }
+    free(index);
+    free(code);
+    if (!ok)
+    {
+        wc_plan_strings_clear(T);
+        return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                            "out of memory (the strings of %ld fixels)",
+                            (long) n);
     }
     return WC_OK;
 }
-
