@@ -69,6 +69,9 @@ key_get(const uint64_t * k, slong q)
     return (unsigned int) (k[q / KEY_PLANES] >> KEY_SHIFT(q)) & 3;
 }
 
+/* The low half of a slot of the hash table: a cell's index + 1.  */
+#define SLOT_INDEX UINT64_C(0xFFFFFFFF)
+
 typedef struct
 {
     slong m;                /* planes */
@@ -76,11 +79,11 @@ typedef struct
     slong cap;              /* cells expected */
     slong count;
     uint64_t * key;         /* cap x kw */
-    uint64_t * hash;        /* cap */
     fmpz * pt;              /* cap x 3 */
     slong * dim;            /* cap */
     slong size;             /* hash table slots, a power of two */
-    slong * slot;
+    uint64_t * slot;        /* 0, or the high half of a cell's hash and
+                               its index + 1 in the low half */
     uint64_t * cur;         /* kw: the current face's key */
     uint64_t curhash;
     uint64_t * zob;         /* 3 m: the word of plane q and sign + 1 b at
@@ -98,18 +101,15 @@ cell_list_init(cell_list * L, slong m, slong cap)
     L->cap = cap;
     L->count = 0;
     L->key = malloc(sizeof(uint64_t) * ((size_t) cap * L->kw + 1));
-    L->hash = flint_malloc(sizeof(uint64_t) * (cap + 1));
     L->pt = _fmpz_vec_init(3 * (cap + 1));
     L->dim = flint_malloc(sizeof(slong) * (cap + 1));
     L->size = _wc_hash_size(2 * cap + 2);
-    L->slot = flint_malloc(sizeof(slong) * L->size);
+    L->slot = calloc(L->size, sizeof(uint64_t));
     L->cur = flint_malloc(sizeof(uint64_t) * (L->kw + 1));
     L->zob = flint_malloc(sizeof(uint64_t) * (3 * m + 1));
-    if (L->key == NULL || L->hash == NULL || L->dim == NULL
-        || L->slot == NULL || L->cur == NULL || L->zob == NULL)
+    if (L->key == NULL || L->dim == NULL || L->slot == NULL
+        || L->cur == NULL || L->zob == NULL || (uint64_t) cap >= SLOT_INDEX)
         return 0;
-    for (i = 0; i < L->size; i++)
-        L->slot[i] = -1;
     L->curhash = 0;
     for (i = 0; i < 3 * m; i++)
         L->zob[i] = _wc_hash_mix64(UINT64_C(0x9e3779b97f4a7c15) * (i + 1));
@@ -126,10 +126,9 @@ static void
 cell_list_clear(cell_list * L)
 {
     free(L->key);
-    flint_free(L->hash);
     _fmpz_vec_clear(L->pt, 3 * (L->cap + 1));
     flint_free(L->dim);
-    flint_free(L->slot);
+    free(L->slot);
     flint_free(L->cur);
     flint_free(L->zob);
 }
@@ -160,15 +159,14 @@ cell_list_add(cell_list * L, slong d, slong * at)
 {
     slong kw = L->kw, c = L->count, i, j;
     const uint64_t * k = L->cur;
-    uint64_t h = L->curhash;
+    uint64_t h = L->curhash, tag = h & ~SLOT_INDEX;
 
-    for (i = (slong) (h & (L->size - 1)); L->slot[i] >= 0;
+    for (i = (slong) (h & (L->size - 1)); L->slot[i] != 0;
          i = (i + 1) & (L->size - 1))
     {
-        slong o = L->slot[i];
-
-        if (L->hash[o] == h)
+        if ((L->slot[i] & ~SLOT_INDEX) == tag)
         {
+            slong o = (slong) (L->slot[i] & SLOT_INDEX) - 1;
             const uint64_t * ko = L->key + o * kw;
 
             for (j = 0; j < kw && ko[j] == k[j]; j++)
@@ -180,8 +178,7 @@ cell_list_add(cell_list * L, slong d, slong * at)
     if (c >= L->cap)
         return -2;
     memcpy(L->key + c * kw, k, sizeof(uint64_t) * kw);
-    L->slot[i] = c;
-    L->hash[c] = h;
+    L->slot[i] = tag | (uint64_t) (c + 1);
     L->dim[c] = d;
     *at = c;
     L->count++;
