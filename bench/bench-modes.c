@@ -37,6 +37,7 @@
 
 #include "wrenchcone.h"
 #include "benchutil.h"
+#include "core/randgen.h"
 #include "analysis/kinematics.h"
 #include "analysis/modeswalk.h"
 #include "ref-kin.h"
@@ -51,12 +52,10 @@
 static void
 make_problem(wc_problem_t P, slong n)
 {
-    fmpq_t t, t2, den, c;
+    fmpq_t t, c;
     slong k;
 
     fmpq_init(t);
-    fmpq_init(t2);
-    fmpq_init(den);
     fmpq_init(c);
     fmpq_set_si(P->com + 0, 1, 7);
     fmpq_set_si(P->com + 1, -1, 9);
@@ -66,13 +65,7 @@ make_problem(wc_problem_t P, slong n)
         fmpq * p = f->point, * d = f->normal;
 
         fmpq_set_si(t, k + 1, (ulong) (n - k + 1));
-        fmpq_mul(t2, t, t);
-        fmpq_add_si(den, t2, 1);
-        fmpq_neg(p + 0, t2);
-        fmpq_add_si(p + 0, p + 0, 1);
-        fmpq_div(p + 0, p + 0, den);
-        fmpq_mul_si(p + 1, t, 2);
-        fmpq_div(p + 1, p + 1, den);
+        _wc_unit_circle_point(p, t);
         /* d = -p + c (-p_y, p_x) */
         fmpq_set_si(c, k % 2 ? -1 : 1, (ulong) (k + 3));
         fmpq_mul(d + 0, c, p + 1);
@@ -83,8 +76,6 @@ make_problem(wc_problem_t P, slong n)
         f->state = WC_TOUCHING;
     }
     fmpq_clear(t);
-    fmpq_clear(t2);
-    fmpq_clear(den);
     fmpq_clear(c);
 }
 

@@ -14,6 +14,7 @@
 #include <flint/fmpq.h>
 
 #include "benchutil.h"
+#include "core/randgen.h"
 
 double
 wcbench_now(void)
@@ -37,25 +38,15 @@ wcbench_circle_fixel(wc_problem_t P, slong a, slong b, int sy,
                      wc_fixel_state state)
 {
     wc_fixel_struct * f = wc_problem_add_fixel(P);
-    fmpq_t s, s2, den;
+    fmpq_t s;
 
     fmpq_init(s);
-    fmpq_init(s2);
-    fmpq_init(den);
-    fmpq_set_si(s, a, (ulong) b);
-    fmpq_mul(s2, s, s);
-    fmpq_add_si(den, s2, 1);
-    fmpq_neg(f->point + 0, s2);
-    fmpq_add_si(f->point + 0, f->point + 0, 1);
-    fmpq_div(f->point + 0, f->point + 0, den);
-    fmpq_mul_si(f->point + 1, s, 2 * sy);
-    fmpq_div(f->point + 1, f->point + 1, den);
+    fmpq_set_si(s, sy * a, (ulong) b);  /* the point at -s is (x, -y) */
+    _wc_unit_circle_point(f->point, s);
     fmpq_neg(f->normal + 0, f->point + 0);
     fmpq_neg(f->normal + 1, f->point + 1);
     f->state = state;
     fmpq_clear(s);
-    fmpq_clear(s2);
-    fmpq_clear(den);
 }
 
 /* Rational points on the unit circle from Pythagorean parametrisation,

@@ -34,7 +34,7 @@ double wcbench_slope(const double * x, const double * y, slong len);
 
 /* Add to P a fixel on the unit circle at ((1 - s^2), 2 sy s) / (1 + s^2),
    s = a/b, its normal towards the centre, in the given state (sy = -1:
-   the lower half).  */
+   the lower half; sy is 1 or -1).  */
 void wcbench_circle_fixel(wc_problem_t P, slong a, slong b, int sy,
                           wc_fixel_state state);
 

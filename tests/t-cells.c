@@ -29,30 +29,13 @@
 #include <flint/fmpq_vec.h>
 
 #include "wrenchcone.h"
+#include "exact/vec3.h"
 #include "testutil.h"
 
 #define ROW(A, i) ((A)->rows[i])
 
 /* ---------------------------------------------------------------------
    Vectors.  */
-
-static void
-cross3(fmpz * c, const fmpz * x, const fmpz * y)
-{
-    fmpz_t t;
-
-    fmpz_init(t);
-    fmpz_mul(c + 0, x + 1, y + 2);
-    fmpz_mul(t, x + 2, y + 1);
-    fmpz_sub(c + 0, c + 0, t);
-    fmpz_mul(c + 1, x + 2, y + 0);
-    fmpz_mul(t, x + 0, y + 2);
-    fmpz_sub(c + 1, c + 1, t);
-    fmpz_mul(c + 2, x + 0, y + 1);
-    fmpz_mul(t, x + 1, y + 0);
-    fmpz_sub(c + 2, c + 2, t);
-    fmpz_clear(t);
-}
 
 static int
 sgn_dot(const fmpz * x, const fmpz * y)
@@ -162,7 +145,7 @@ random_normals(fmpz_mat_t N)
         else if (kind == 4)     /* through the common line L */
         {
             rand_vec(r, 2);
-            cross3(h, L, r);
+            _wc_zvec3_cross(h, L, r);
         }
         else if (kind == 5)     /* holds a coordinate axis */
         {
@@ -171,7 +154,7 @@ random_normals(fmpz_mat_t N)
         }
         else if (kind == 6 && i >= 2)   /* through the line of two others */
         {
-            cross3(r, ROW(N, i - 1), ROW(N, i - 2));
+            _wc_zvec3_cross(r, ROW(N, i - 1), ROW(N, i - 2));
             if (is_zero3(r))
                 rand_vec(h, 2);
             else
@@ -179,7 +162,7 @@ random_normals(fmpz_mat_t N)
                 fmpz * s = _fmpz_vec_init(3);
 
                 rand_vec(s, 2);
-                cross3(h, r, s);
+                _wc_zvec3_cross(h, r, s);
                 _fmpz_vec_clear(s, 3);
             }
         }
@@ -363,7 +346,7 @@ reference_cells(sign_bag * B, const fmpz_mat_t H)
         fmpz_add_ui(K, K, 1);
         /* Lines on p.  */
         for (q = 0; q < m; q++)
-            cross3(ROW(on, q), ROW(H, p), ROW(H, q));
+            _wc_zvec3_cross(ROW(on, q), ROW(H, p), ROW(H, q));
         for (a = 0; a < m; a++)
         {
             if (a == p)
@@ -378,7 +361,7 @@ reference_cells(sign_bag * B, const fmpz_mat_t H)
             {
                 if (b == p)
                     continue;
-                cross3(v, ROW(on, a), ROW(on, b));
+                _wc_zvec3_cross(v, ROW(on, a), ROW(on, b));
                 if (is_zero3(v))
                     continue;       /* the same line */
                 for (i = 0; i < 4; i++)
@@ -586,12 +569,12 @@ check_cells(const wc_cells_t A, const fmpz_mat_t N)
     {
         q = wctest_randint(0, m - 1);
         rand_vec(y, 3);
-        cross3(x, ROW(H, q), y);
+        _wc_zvec3_cross(x, ROW(H, q), y);
         check_locate(A, x, "point on a plane");
         i = wctest_randint(0, m - 1);
         if (i != q)
         {
-            cross3(x, ROW(H, q), ROW(H, i));
+            _wc_zvec3_cross(x, ROW(H, q), ROW(H, i));
             _fmpz_vec_scalar_mul_si(x, x, 3, wctest_randint(-3, 3));
             check_locate(A, x, "point on a line");
         }
@@ -787,11 +770,12 @@ check_set(const wc_cells_t A, const int * member, const wc_cone_struct * K,
         if (j % 3 == 1)
         {
             rand_vec(y, 3);
-            cross3(x, ROW(A->planes, wctest_randint(0, m - 1)), y);
+            _wc_zvec3_cross(x, ROW(A->planes, wctest_randint(0, m - 1)),
+                            y);
         }
         else if (j % 3 == 2)
-            cross3(x, ROW(A->planes, wctest_randint(0, m - 1)),
-                   ROW(A->planes, wctest_randint(0, m - 1)));
+            _wc_zvec3_cross(x, ROW(A->planes, wctest_randint(0, m - 1)),
+                            ROW(A->planes, wctest_randint(0, m - 1)));
         zvec_to_q(g, x);
         cell = wc_cells_locate(A, g);
         if (cell < 0)

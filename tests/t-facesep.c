@@ -38,6 +38,7 @@
 #include "model/model.h"
 #include "analysis/stabmodel.h"
 #include "analysis/facesys.h"
+#include "core/randgen.h"
 #include "testutil.h"
 
 typedef struct
@@ -223,26 +224,19 @@ cradle(wc_problem_t P, slong t, slong mu_num, slong mu_den, int near)
     for (k = 0; k < t + near; k++)
     {
         wc_fixel_struct * f = wc_problem_add_fixel(P);
-        fmpq_t s, s2, den;
-        int sy = k < t ? -1 : 1;
+        fmpq_t s;
 
         fmpq_init(s);
-        fmpq_init(s2);
-        fmpq_init(den);
-        fmpq_set_si(s, k < t ? k + 1 : 1, (ulong) (k < t ? t - k : 1));
-        fmpq_mul(s2, s, s);
-        fmpq_add_si(den, s2, 1);
-        fmpq_neg(f->point + 0, s2);
-        fmpq_add_si(f->point + 0, f->point + 0, 1);
-        fmpq_div(f->point + 0, f->point + 0, den);
-        fmpq_mul_si(f->point + 1, s, 2 * sy);
-        fmpq_div(f->point + 1, f->point + 1, den);
+        /* the parameter -s gives the point below the axis */
+        if (k < t)
+            fmpq_set_si(s, -(k + 1), (ulong) (t - k));
+        else
+            fmpq_one(s);
+        _wc_unit_circle_point(f->point, s);
         fmpq_neg(f->normal + 0, f->point + 0);
         fmpq_neg(f->normal + 1, f->point + 1);
         f->state = k < t ? WC_TOUCHING : WC_NEAR;
         fmpq_clear(s);
-        fmpq_clear(s2);
-        fmpq_clear(den);
     }
 }
 

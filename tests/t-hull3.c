@@ -30,6 +30,7 @@
 #include "ref-hull3.h"
 #include "exact/hull3.h"
 #include "exact/vec3.h"
+#include "exact/zvec3set.h"
 #include "exact/fan3.h"
 #include "exact/polar3.h"
 #include "exact/cddbridge.h"
@@ -156,18 +157,6 @@ make(fmpq_mat_t R, fmpq_mat_t L, int layout, slong k)
     }
 }
 
-static int
-lex(const fmpz * a, const fmpz * b)
-{
-    slong j;
-    int c;
-
-    for (j = 0; j < 3; j++)
-        if ((c = fmpz_cmp(a + j, b + j)) != 0)
-            return c;
-    return 0;
-}
-
 /* S := the rows of A as sorted distinct primitive integer rows.  */
 static void
 row_set(fmpz_mat_t S, const fmpq_mat_t A)
@@ -185,7 +174,7 @@ row_set(fmpz_mat_t S, const fmpq_mat_t A)
             _fmpz_vec_set(T->rows[i], S->rows[i], 3);
         /* insertion sort: fine for these sizes */
         for (i = 1; i < k; i++)
-            for (j = i; j > 0 && lex(T->rows[j - 1], T->rows[j]) > 0; j--)
+            for (j = i; j > 0 && _wc_zvec3_cmp(T->rows[j - 1], T->rows[j]) > 0; j--)
                 _fmpz_vec_swap(T->rows[j - 1], T->rows[j], 3);
         fmpz_mat_swap(S, T);
         fmpz_mat_clear(T);

@@ -15,7 +15,10 @@
    definition, at every crossing, at every reported end, at rationals
    just beside them and at random places.  Membership in the reported
    regions is decided here independently (relative angles from an arc's
-   start, not the library's absolute order).  */
+   start, not the library's absolute order).  The push wrench (wrench_at,
+   cross2) and primitive3 are deliberate independent copies of push.c's
+   push_wrench and compare.c's primitive; the plain vector operations
+   come from the library (vec3.h, randgen.h).  */
 
 #include <config.h>
 
@@ -26,6 +29,8 @@
 #include <flint/fmpz_vec.h>
 
 #include "wrenchcone.h"
+#include "core/randgen.h"
+#include "exact/vec3.h"
 #include "testutil.h"
 
 #define ROW(A, i) ((A)->rows[i])
@@ -386,26 +391,9 @@ sgn_cross(const fmpq * a, const fmpq * b)
 }
 
 static int
-sgn_dot(const fmpq * a, const fmpq * b)
-{
-    fmpq_t r, t;
-    int s;
-
-    fmpq_init(r);
-    fmpq_init(t);
-    fmpq_mul(r, a + 0, b + 0);
-    fmpq_mul(t, a + 1, b + 1);
-    fmpq_add(r, r, t);
-    s = fmpq_sgn(r);
-    fmpq_clear(r);
-    fmpq_clear(t);
-    return s;
-}
-
-static int
 same_dir(const fmpq * a, const fmpq * b)
 {
-    return sgn_cross(a, b) == 0 && sgn_dot(a, b) > 0;
+    return sgn_cross(a, b) == 0 && _wc_qvec2_dot_sgn(a, b) > 0;
 }
 
 /* 0 when x is within the half turn [0, pi) counter-clockwise from f
@@ -1381,17 +1369,6 @@ primitive3(fmpz * out, const fmpq * v)
 }
 
 static void
-cross3(fmpz * c, const fmpz * a, const fmpz * b)
-{
-    fmpz_mul(c + 0, a + 1, b + 2);
-    fmpz_submul(c + 0, a + 2, b + 1);
-    fmpz_mul(c + 1, a + 2, b + 0);
-    fmpz_submul(c + 1, a + 0, b + 2);
-    fmpz_mul(c + 2, a + 0, b + 1);
-    fmpz_submul(c + 2, a + 1, b + 0);
-}
-
-static void
 rand_int_vec(fmpz * h, slong range)
 {
     slong j;
@@ -1466,8 +1443,9 @@ rand_oracle(oracle * O, fmpz_mat_t H, const wc_problem_t P, int ccw)
         primitive3(a, w);
         do
             rand_int_vec(b, 2);
-        while (cross3(ROW(H, 0), a, b), _fmpz_vec_is_zero(ROW(H, 0), 3));
-        cross3(ROW(H, 1), a, ROW(H, 0));
+        while (_wc_zvec3_cross(ROW(H, 0), a, b),
+               _fmpz_vec_is_zero(ROW(H, 0), 3));
+        _wc_zvec3_cross(ROW(H, 1), a, ROW(H, 0));
         _fmpz_vec_set(ROW(H, 2), a, 3);
         O->nterms = 1;
         O->nlit[0] = 3;
@@ -1496,7 +1474,7 @@ rand_oracle(oracle * O, fmpz_mat_t H, const wc_problem_t P, int ccw)
             do
             {
                 rand_int_vec(b, 2);
-                cross3(h, a, b);
+                _wc_zvec3_cross(h, a, b);
             }
             while (_fmpz_vec_is_zero(h, 3));
         }
@@ -1512,7 +1490,7 @@ rand_oracle(oracle * O, fmpz_mat_t H, const wc_problem_t P, int ccw)
             poly_wrench(w2, P, ccw, k, s);
             primitive3(a, w);
             primitive3(b, w2);
-            cross3(h, a, b);
+            _wc_zvec3_cross(h, a, b);
             fmpq_clear(s);
             if (_fmpz_vec_is_zero(h, 3))
                 rand_int_vec(h, 3);

@@ -161,6 +161,20 @@ splice(const char * text, size_t len, size_t at, size_t cut,
     return s;
 }
 
+/* Where the claim starts in cert, just after key; the test fails unless
+   it is set[0..len) (the set as printed).  */
+static const char *
+claim_at(const char * cert, const char * key, const char * set, size_t len,
+         const char * what, slong it)
+{
+    const char * at = strstr(cert, key);
+
+    if (at == NULL || strncmp(at + strlen(key), set, len) != 0)
+        wctest_fail("%s %ld: the claim is not the set as printed", what,
+                    (long) it);
+    return at + strlen(key);
+}
+
 static void
 check_problem(const wc_problem_t P, const char * what, slong it)
 {
@@ -175,22 +189,16 @@ check_problem(const wc_problem_t P, const char * what, slong it)
     wc_error_init(err);
     if (wc_stability(S, P, err) != WC_OK)
         goto done;              /* the problem is refused: nothing to do */
-    j.P = P;
-    j.S = S;
-    j.R = NULL;
-    j.C = NULL;
+    j = (job) { P, S, NULL, NULL };
     cert = holding_cert(&j, "certificate", what, it, &clen);
     strong = print_to_string(put_strong, S, &slen);
-    at = strstr(cert, "\n \"strong\": ");
-    if (at == NULL || strncmp(at + 12, strong, slen) != 0)
-        wctest_fail("%s %ld: the claim is not the set as printed", what,
-                    (long) it);
+    at = claim_at(cert, "\n \"strong\": ", strong, slen, what, it);
 
     /* the weak cone claimed as the strong set */
     weak = print_to_string(put_weak_as_set, S, &wlen);
     if (wlen != slen || memcmp(weak, strong, slen) != 0)
     {
-        t = splice(cert, clen, (size_t) (at + 12 - cert), slen, weak, &tlen);
+        t = splice(cert, clen, (size_t) (at - cert), slen, weak, &tlen);
         /* (malformed when a cell names a piece the weak cone lacks) */
         if (verify(t, tlen) == 1)
             wctest_fail("%s %ld: claiming the weak cone holds", what,
@@ -273,19 +281,13 @@ check_plan(const wc_problem_t P, const char * what, slong it)
     wc_error_init(err);
     if (wc_plan(R, P, 0, err) != WC_OK)
         goto done;
-    j.P = P;
-    j.S = NULL;
-    j.R = R;
-    j.C = NULL;
+    j = (job) { P, NULL, R, NULL };
     cert = holding_cert(&j, "plan certificate", what, it, &clen);
     goal = print_to_string(put_goal, R, &glen);
-    at = strstr(cert, "\n \"goal\": ");
-    if (at == NULL || strncmp(at + 10, goal, glen) != 0)
-        wctest_fail("%s %ld: the claim is not the goal set as printed", what,
-                    (long) it);
+    at = claim_at(cert, "\n \"goal\": ", goal, glen, what, it);
     if (!R->goal->empty)
     {
-        t = splice(cert, clen, (size_t) (at + 10 - cert), glen,
+        t = splice(cert, clen, (size_t) (at - cert), glen,
                    "{\"empty\": true, \"interior\": false, \"pieces\": []}",
                    &tlen);
         if (verify(t, tlen) == 1)
@@ -337,10 +339,7 @@ check_critical(const wc_problem_t P, const char * what, slong it)
     fmpq_set_si(max, 4, 1);
     if (wc_plan_critical(C, P, width, max, err) != WC_OK)
         goto done;
-    j.P = P;
-    j.S = NULL;
-    j.R = NULL;
-    j.C = C;
+    j = (job) { P, NULL, NULL, C };
     cert = print_to_string(put_crit, &j, &clen);
     if (cert == NULL)
         wctest_fail("%s %ld: no critical certificate", what, (long) it);

@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "core/problem.h"
+#include "core/randgen.h"
 #include "io/print.h"
 #include "testutil.h"
 
@@ -429,11 +430,9 @@ rand_mass(fmpq_t m)
 static void
 disk_point(fmpq * p, fmpq * d, const fmpq * c, const fmpq_t rad)
 {
-    fmpq_t t, t2, den, u;
+    fmpq_t t, u;
 
     fmpq_init(t);
-    fmpq_init(t2);
-    fmpq_init(den);
     fmpq_init(u);
     if (wctest_chance(1, 2))
     {
@@ -447,13 +446,7 @@ disk_point(fmpq * p, fmpq * d, const fmpq * c, const fmpq_t rad)
         do
             wctest_rand_fmpq(t, 2, 3);
         while (fmpq_is_zero(t));
-        fmpq_mul(t2, t, t);
-        fmpq_add_si(den, t2, 1);
-        fmpq_neg(p + 0, t2);
-        fmpq_add_si(p + 0, p + 0, 1);
-        fmpq_div(p + 0, p + 0, den);
-        fmpq_mul_si(p + 1, t, 2);
-        fmpq_div(p + 1, p + 1, den);
+        _wc_unit_circle_point(p, t);
     }
     /* p is on the unit circle: the normal is -p, then place it.  */
     fmpq_neg(d + 0, p + 0);
@@ -469,8 +462,6 @@ disk_point(fmpq * p, fmpq * d, const fmpq * c, const fmpq_t rad)
     fmpq_add(p + 0, p + 0, c + 0);
     fmpq_add(p + 1, p + 1, c + 1);
     fmpq_clear(t);
-    fmpq_clear(t2);
-    fmpq_clear(den);
     fmpq_clear(u);
 }
 

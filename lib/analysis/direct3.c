@@ -76,24 +76,6 @@ typedef __int128 wide_t;
 #endif
 #define SMALL(x) (!COEFF_IS_MPZ(*(x)))
 
-/* The sign of a . b; _wc_zvec3_dot_sgn_fast inline, for the loops over
-   rows.  */
-static inline int
-dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t)
-{
-#ifdef __SIZEOF_INT128__
-    if (SMALL(a) && SMALL(a + 1) && SMALL(a + 2) && SMALL(b) && SMALL(b + 1)
-        && SMALL(b + 2))
-    {
-        wide_t x = (wide_t) a[0] * b[0] + (wide_t) a[1] * b[1]
-            + (wide_t) a[2] * b[2];
-
-        return (x > 0) - (x < 0);
-    }
-#endif
-    return _wc_zvec3_dot_sgn_fast(a, b, t);
-}
-
 #ifdef __SIZEOF_INT128__
 /* x[0..k) := a[0..k) when every entry fits a word (then 1; else 0 and x
    untouched).  */
@@ -339,7 +321,7 @@ eq_rank(ws_struct * w, fmpz * u)
             if (r == 2)
                 _wc_zrow3_primitive(u, SCRATCH(w));
         }
-        else if (dot_sgn(u, x, SCRATCH(w)) != 0)
+        else if (_wc_zvec3_dot_sgn_fast(u, x, SCRATCH(w)) != 0)
             r = 3;
     }
     return r;
@@ -355,7 +337,7 @@ on_line(ws_struct * w, fmpz * u, int * apex)
 
     for (i = 0; i < w->nh + w->ns; i++)
     {
-        s = dot_sgn(i < w->nh ? w->H + 3 * i
+        s = _wc_zvec3_dot_sgn_fast(i < w->nh ? w->H + 3 * i
                                    : w->S + 3 * (i - w->nh), u, SCRATCH(w));
         pos |= s > 0;
         neg |= s < 0;
@@ -368,7 +350,7 @@ on_line(ws_struct * w, fmpz * u, int * apex)
     if (pos)
         _fmpz_vec_neg(u, u, 3);                 /* the ray is -u */
     for (i = 0; i < w->ns; i++)
-        if (dot_sgn(w->S + 3 * i, u, SCRATCH(w)) >= 0)
+        if (_wc_zvec3_dot_sgn_fast(w->S + 3 * i, u, SCRATCH(w)) >= 0)
             return V_EMPTY;
     return V_RAY;
 }
@@ -400,13 +382,13 @@ faces_holding(wc_cone_t W, const fmpz * y, fmpz_t t)
     if (T == NULL)
         return 0;
     for (j = 0; j < m; j++)
-        if (dot_sgn(WC_ROW(W->ineqs, j), y, t) == 0)
+        if (_wc_zvec3_dot_sgn_fast(WC_ROW(W->ineqs, j), y, t) == 0)
             T[nt++] = j;
     for (i = 0; i < k; i++)
     {
         in[i] = 1;
         for (j = 0; j < nt && in[i]; j++)
-            in[i] = dot_sgn(WC_ROW(W->ineqs, T[j]),
+            in[i] = _wc_zvec3_dot_sgn_fast(WC_ROW(W->ineqs, T[j]),
                                            WC_ROW(W->rays, i), t) == 0;
         size += in[i];
     }
@@ -442,7 +424,7 @@ plane_of_rows(ws_struct * w, fmpz * u)
     if (_fmpz_vec_is_zero(u, 3))
         goto done;
     for (i = 0; i < w->nh; i++)
-        if (dot_sgn(u, w->H + 3 * i, t) != 0)
+        if (_wc_zvec3_dot_sgn_fast(u, w->H + 3 * i, t) != 0)
         {
             r = -1;
             goto done;
@@ -453,19 +435,19 @@ plane_of_rows(ws_struct * w, fmpz * u)
         const fmpz * x = w->H + 3 * i;
 
         _wc_zvec3_cross(c, h, x);
-        s = dot_sgn(u, c, t);
+        s = _wc_zvec3_dot_sgn_fast(u, c, t);
         if (s == 0)
-            opp |= dot_sgn(h, x, t) < 0;
+            opp |= _wc_zvec3_dot_sgn_fast(h, x, t) < 0;
         else if (s > 0 && A != NULL)
         {
             _wc_zvec3_cross(c, A, x);
-            if (dot_sgn(u, c, t) > 0)
+            if (_wc_zvec3_dot_sgn_fast(u, c, t) > 0)
                 A = x;
         }
         else if (s < 0 && B != NULL)
         {
             _wc_zvec3_cross(c, B, x);
-            if (dot_sgn(u, c, t) < 0)
+            if (_wc_zvec3_dot_sgn_fast(u, c, t) < 0)
                 B = x;
         }
         else if (s > 0)
@@ -476,7 +458,7 @@ plane_of_rows(ws_struct * w, fmpz * u)
     if (A != NULL && B != NULL)
     {
         _wc_zvec3_cross(c, A, B);
-        r = opp || dot_sgn(u, c, t) > 0;
+        r = opp || _wc_zvec3_dot_sgn_fast(u, c, t) > 0;
     }
 
 done:
@@ -562,7 +544,7 @@ plane_sum(wc_cone_t W, ws_struct * w, wc_error_t err)
     {
         for (i = 0; i < w->nq; i++)
         {
-            sg = dot_sgn(a, w->Q + 3 * i, t);
+            sg = _wc_zvec3_dot_sgn_fast(a, w->Q + 3 * i, t);
             pos |= sg > 0;
             neg |= sg < 0;
         }
@@ -610,7 +592,7 @@ signs(const fmpz * h, const fmpz * A, slong k, fmpz_t t)
 
     for (j = 0; j < k && r != 3; j++)
     {
-        sg = dot_sgn(h, A + 3 * j, t);
+        sg = _wc_zvec3_dot_sgn_fast(h, A + 3 * j, t);
         r |= sg > 0 ? 1 : sg < 0 ? 2 : 0;
     }
     return r;

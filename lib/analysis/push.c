@@ -147,6 +147,25 @@ fmpq_cmp_qsort(const void * a, const void * b)
     return fmpq_cmp((const fmpq *) a, (const fmpq *) b);
 }
 
+/* v[0..len) initialised; cleared.  */
+static void
+qv_init(fmpq * v, slong len)
+{
+    slong j;
+
+    for (j = 0; j < len; j++)
+        fmpq_init(v + j);
+}
+
+static void
+qv_clear(fmpq * v, slong len)
+{
+    slong j;
+
+    for (j = 0; j < len; j++)
+        fmpq_clear(v + j);
+}
+
 /* g := w0 + s (w1 - w0), with dw = w1 - w0.  */
 static void
 affine_point(fmpq * g, const fmpq * w0, const fmpq * dw, const fmpq_t s)
@@ -204,14 +223,10 @@ polygon_edge(ivlist * L, slong edge, const fmpq * v0, const fmpq * v1,
     int * atom = NULL;
     int status = WC_OK;
 
-    for (j = 0; j < 2; j++)
-        fmpq_init(d + j);
-    for (j = 0; j < 3; j++)
-    {
-        fmpq_init(w0 + j);
-        fmpq_init(dw + j);
-        fmpq_init(g + j);
-    }
+    qv_init(d, 2);
+    qv_init(w0, 3);
+    qv_init(dw, 3);
+    qv_init(g, 3);
     fmpq_init(a);
     fmpq_init(b);
     fmpq_init(s);
@@ -302,14 +317,10 @@ polygon_edge(ivlist * L, slong edge, const fmpq * v0, const fmpq * v1,
     }
 
     flint_free(atom);
-    for (j = 0; j < 2; j++)
-        fmpq_clear(d + j);
-    for (j = 0; j < 3; j++)
-    {
-        fmpq_clear(w0 + j);
-        fmpq_clear(dw + j);
-        fmpq_clear(g + j);
-    }
+    qv_clear(d, 2);
+    qv_clear(w0, 3);
+    qv_clear(dw, 3);
+    qv_clear(g, 3);
     fmpq_clear(a);
     fmpq_clear(b);
     fmpq_clear(s);
@@ -644,7 +655,7 @@ disk_regions(ivlist * L, const wc_problem_t P, const fmpz_mat_t planes,
              wc_member_fn in, void * ctx, wc_error_t err)
 {
     const fmpq * c = P->shape_data;
-    slong nrows = fmpz_mat_nrows(planes), i, j, nb, natoms, first_out;
+    slong nrows = fmpz_mat_nrows(planes), i, nb, natoms, first_out;
     fmpq r[2], a[2], g[3];
     fmpq_t t;
     fmpz_t sx, sy;
@@ -659,13 +670,9 @@ disk_regions(ivlist * L, const wc_problem_t P, const fmpz_mat_t planes,
         return wc_error_set(err, WC_EINPUT, P->file, P->shape_line, 0,
                             "disk radius must be positive");
 
-    for (j = 0; j < 2; j++)
-    {
-        fmpq_init(r + j);
-        fmpq_init(a + j);
-    }
-    for (j = 0; j < 3; j++)
-        fmpq_init(g + j);
+    qv_init(r, 2);
+    qv_init(a, 2);
+    qv_init(g, 3);
     fmpq_init(t);
     fmpz_init(sx);
     fmpz_init(sy);
@@ -737,13 +744,9 @@ cleanup:
         fmpz_clear(&bp[i].y);
     }
     flint_free(bp);
-    for (j = 0; j < 2; j++)
-    {
-        fmpq_clear(r + j);
-        fmpq_clear(a + j);
-    }
-    for (j = 0; j < 3; j++)
-        fmpq_clear(g + j);
+    qv_clear(r, 2);
+    qv_clear(a, 2);
+    qv_clear(g, 3);
     fmpq_clear(t);
     fmpz_clear(sx);
     fmpz_clear(sy);

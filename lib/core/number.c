@@ -119,20 +119,30 @@ scan_number(wc_numparts * np, const char * s, size_t len)
     return np->e > WC_MAX_EXPONENT ? 2 : 0;
 }
 
+/* scan_number, its failure set in err as the error of the token s
+   (WC_OK, or the status of that error).  */
+static int
+scan_checked(wc_numparts * np, const char * s, size_t len, wc_error_t err)
+{
+    int r = scan_number(np, s, len);
+
+    if (r == 0)
+        return WC_OK;
+    return _wc_error_token(err, WC_EINPUT, NULL, 0, 0, r == 1
+                           ? "bad number '%s'"
+                           : "exponent out of range in '%s'", s, len);
+}
+
 int
 wc_parse_number(fmpq_t x, const char * s, size_t len, wc_error_t err)
 {
     wc_numparts np;
     fmpz_t num, den;
     size_t nfrac;
-    int status = WC_OK;
-    int r = scan_number(&np, s, len);
+    int status = scan_checked(&np, s, len, err);
 
-    if (r != 0)
-        return _wc_error_token(err, WC_EINPUT, NULL, 0, 0, r == 1
-                               ? "bad number '%s'"
-                               : "exponent out of range in '%s'", s,
-                               len);
+    if (status != WC_OK)
+        return status;
     fmpz_init(num);
     fmpz_init(den);
     if (np.fraction)
@@ -308,14 +318,11 @@ wc_parse_number_bounded(fmpq_t x, const char * s, size_t len,
 {
     wc_numparts np;
     fmpz_t num, den;
-    int status = WC_OK, big;
-    int r = scan_number(&np, s, len);
+    int big;
+    int status = scan_checked(&np, s, len, err);
 
-    if (r != 0)
-        return _wc_error_token(err, WC_EINPUT, NULL, 0, 0, r == 1
-                               ? "bad number '%s'"
-                               : "exponent out of range in '%s'", s,
-                               len);
+    if (status != WC_OK)
+        return status;
     fmpz_init(num);
     fmpz_init(den);
     big = np.fraction ? bounded_fraction(num, den, s, &np)

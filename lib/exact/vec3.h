@@ -28,8 +28,25 @@ void _wc_zqvec3_dot(fmpq_t r, const fmpz * h, const fmpq * p);
 int _wc_zvec3_dot_sgn(const fmpz * a, const fmpz * b, fmpz_t t);
 
 /* The sign of a . b, in 128-bit integers when no entry is a GMP integer;
-   t is scratch only (it does not hold a . b afterwards).  */
-int _wc_zvec3_dot_sgn_fast(const fmpz * a, const fmpz * b, fmpz_t t);
+   t is scratch only (it does not hold a . b afterwards).  Inline: the
+   loops over rows of the 3-dimensional cones call it most.  */
+static inline int
+_wc_zvec3_dot_sgn_fast(const fmpz * a, const fmpz * b, fmpz_t t)
+{
+#ifdef __SIZEOF_INT128__
+    /* Word entries are below 2^62 in absolute value: each product is
+       below 2^124 and the sum below 2^126.  */
+    if (!COEFF_IS_MPZ(a[0]) && !COEFF_IS_MPZ(a[1]) && !COEFF_IS_MPZ(a[2])
+        && !COEFF_IS_MPZ(b[0]) && !COEFF_IS_MPZ(b[1]) && !COEFF_IS_MPZ(b[2]))
+    {
+        __int128 s = (__int128) a[0] * b[0] + (__int128) a[1] * b[1]
+            + (__int128) a[2] * b[2];
+
+        return (s > 0) - (s < 0);
+    }
+#endif
+    return _wc_zvec3_dot_sgn(a, b, t);
+}
 
 /* c := a x b and r := a . b, in 128-bit integers when no entry of a or b
    is a GMP integer (the same values as _wc_zvec3_cross and

@@ -128,6 +128,20 @@ _wc_dm_keep_rows(d_mat_t A, slong k)
     d_mat_clear(T);
 }
 
+/* Row i of A copied to row k (k <= i: the rows kept so far) and scaled
+   to a unit vector: that row, or NULL when it is zero.  */
+static double *
+unit_row_to(d_mat_t A, slong i, slong k)
+{
+    double * v = A->rows[k];
+    slong j;
+
+    if (k != i)
+        for (j = 0; j < A->c; j++)
+            v[j] = d_mat_entry(A, i, j);
+    return _wc_dvec_normalise(v, A->c) == 0.0 ? NULL : v;
+}
+
 /* Replace the rows of A by an orthonormal basis of their span (modified
    Gram-Schmidt); a row whose remainder is shorter than tol times its
    length is taken as dependent and dropped.  */
@@ -138,12 +152,9 @@ _wc_dm_orthonormalise(d_mat_t A, double tol)
 
     for (i = 0; i < A->r; i++)
     {
-        double * v = A->rows[k];
+        double * v = unit_row_to(A, i, k);
 
-        if (k != i)
-            for (j = 0; j < d; j++)
-                v[j] = d_mat_entry(A, i, j);
-        if (_wc_dvec_normalise(v, d) == 0.0)
+        if (v == NULL)
             continue;
         for (l = 0; l < k; l++)
         {
@@ -164,16 +175,13 @@ _wc_dm_orthonormalise(d_mat_t A, double tol)
 void
 _wc_dm_unit_rows(d_mat_t A, const d_mat_t Q, double tol)
 {
-    slong d = A->c, i, j, k = 0;
+    slong d = A->c, i, k = 0;
 
     for (i = 0; i < A->r; i++)
     {
-        double * v = A->rows[k];
+        double * v = unit_row_to(A, i, k);
 
-        if (k != i)
-            for (j = 0; j < d; j++)
-                v[j] = d_mat_entry(A, i, j);
-        if (_wc_dvec_normalise(v, d) == 0.0)
+        if (v == NULL)
             continue;
         if (Q != NULL)
             _wc_dvec_project_out(v, Q, d);
