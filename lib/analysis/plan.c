@@ -169,20 +169,26 @@ plan_eq25(wc_plan_t R, const int * goal, fmpq * g)
     }
 }
 
-/* The cells of the needed cones as bitsets (planbits.c), computed a
-   cone at a time when needed and never stored: how many kept cones hold
-   each cell is a bit-sliced counter (bit i % FLINT_BITS of level b of
-   word i / FLINT_BITS is bit b of cell i's count, levels bits), so a cone is
-   added or removed a word of cells at a time.  The levels of a word are
-   next to each other: ctr[w * levels + b].  */
+/* The cells of the needed cones as bitsets (planbits.c).  Exact
+   redundancy drops cone k, in ASCII order, when every cell of it is held
+   by another cone still kept: by a kept cone before k or by any cone
+   after k (all of them are still there).  So only the cells whose last
+   cone is k can make k needed, and k is needed iff one of them is in no
+   cone kept before it.  Each cone is computed once, from the last to the
+   first, to find the cells it is the last of (those not yet seen: they
+   are disjoint, so at most count of them), and again only when it is
+   kept, to add its cells to the union of the kept cones.  */
 typedef struct
 {
     slong nn;
     wc_cone_key * keys;     /* nn */
     wc_cell_bits X;
     ulong * buf;            /* the current cone's cells */
-    ulong * ctr;
-    slong levels, words;
+    ulong * seen;           /* the cells of the cones after it */
+    slong * w;              /* D_k: the words w[e] of cells bits[e] whose */
+    ulong * bits;           /* last cone is k, off[k + 1] <= e < off[k] */
+    slong * off;            /* nn + 1 */
+    slong words;
 }
 members;
 
@@ -190,48 +196,12 @@ static void
 members_clear(members * M)
 {
     free(M->buf);
-    free(M->ctr);
+    free(M->seen);
+    free(M->w);
+    free(M->bits);
+    free(M->off);
     _wc_cell_bits_clear(&M->X);
     _wc_cone_keys_clear(M->keys, M->nn);
-}
-
-/* Add (sign 1) or remove (-1) the cells x of word w to the counts.  */
-static void
-members_count(members * M, slong w, ulong x, int sign)
-{
-    slong b;
-
-    ulong * c = M->ctr + w * M->levels;
-
-    if (sign > 0)
-        for (b = 0; b < M->levels; b++)
-        {
-            ulong carry = c[b] & x;
-
-            c[b] ^= x;
-            x = carry;
-        }
-    else
-        for (b = 0; b < M->levels; b++)
-        {
-            ulong carry = ~c[b] & x;
-
-            c[b] ^= x;
-            x = carry;
-        }
-}
-
-/* The cells of word w whose count is at least 2 (start 1) or nonzero
-   (start 0).  */
-static ulong
-members_at_least(const members * M, slong w, slong start)
-{
-    ulong r = 0;
-    slong b;
-
-    for (b = start; b < M->levels; b++)
-        r |= M->ctr[w * M->levels + b];
-    return r;
 }
 
 /* M->buf := the cells of needed cone k.  */
@@ -241,63 +211,65 @@ members_cone(members * M, const wc_plan_t R, slong k)
     _wc_cone_key_cells(M->buf, M->keys + k, &M->X, R->cells);
 }
 
-/* M := the bitset index of the cells, and every cell counted in every
-   needed cone.  */
+/* M := the bitset index of the cells, M->seen the cells of any needed
+   cone, and D_k for every needed cone k.  */
 static int
 needed_members(members * M, wc_plan_t R)
 {
-    slong nn = R->T->nneeded, k, w;
+    slong nn = R->T->nneeded, k, w, e = 0;
+    size_t n = (size_t) R->cells->count + 1;
     int ok;
 
     M->nn = nn;
     M->keys = _wc_cone_keys_init(R->cones, nn, R->cells);
     ok = _wc_cell_bits_init(&M->X, R->cells);
-    for (M->levels = 1; (WORD(1) << M->levels) <= nn; M->levels++)
-        ;
     M->words = M->X.words;
-    M->ctr = calloc((size_t) M->levels * M->words + 1, sizeof(ulong));
     M->buf = malloc(sizeof(ulong) * (M->words + 1));
-    ok = ok && M->buf != NULL && M->ctr != NULL && M->keys != NULL;
-    for (k = 0; k < nn && ok; k++)
+    M->seen = calloc(M->words + 1, sizeof(ulong));
+    M->w = malloc(sizeof(slong) * n);
+    M->bits = malloc(sizeof(ulong) * n);
+    M->off = malloc(sizeof(slong) * (nn + 1));
+    ok = ok && M->buf != NULL && M->seen != NULL && M->w != NULL
+        && M->bits != NULL && M->off != NULL && M->keys != NULL;
+    if (!ok)
+        return 0;
+    M->off[nn] = 0;
+    for (k = nn - 1; k >= 0; k--)
     {
         members_cone(M, R, k);
         for (w = 0; w < M->words; w++)
-            if (M->buf[w] != 0)
-                members_count(M, w, M->buf[w], 1);
+        {
+            ulong x = M->buf[w] & ~M->seen[w];
+
+            if (x != 0)
+            {
+                /* each entry holds a new cell: at most count of them */
+                M->w[e] = w;
+                M->bits[e++] = x;
+                M->seen[w] |= x;
+            }
+        }
+        M->off[k] = e;
     }
-    return ok;
+    return 1;
 }
 
-/* Remove the cone M->buf from the counts when every cell of it is held
-   by another kept cone, and return 1; else leave the counts and return
-   0.  One pass: each word is tested (count at least 2, the levels from
-   1 up until they hold the word's cells), then taken off; a cone that is
-   not covered (rare: redundant cones are most) is added back.  */
+/* 1 when cone k is exactly needed: a cell whose last cone is k is in no
+   kept cone before it (M->seen, the union of those, then gets k's).  */
 static int
-members_take(members * M)
+members_keep(members * M, const wc_plan_t R, slong k)
 {
-    slong w;
-    int covered = 1;
+    slong e, w;
 
+    for (e = M->off[k + 1]; e < M->off[k]; e++)
+        if ((M->bits[e] & ~M->seen[M->w[e]]) != 0)
+            break;
+    if (e == M->off[k])
+        return 0;
+    members_cone(M, R, k);
     for (w = 0; w < M->words; w++)
-    {
-        ulong x = M->buf[w], r = 0;
-        const ulong * c = M->ctr + w * M->levels;
-        slong b;
-
-        if (x == 0)
-            continue;
-        for (b = 1; b < M->levels; b++)
-            r |= c[b];
-        if ((x & ~r) != 0)
-            covered = 0;
-        members_count(M, w, x, -1);
-    }
-    if (!covered)
-        for (w = 0; w < M->words; w++)
-            if (M->buf[w] != 0)
-                members_count(M, w, M->buf[w], 1);
-    return covered;
+        M->seen[w] |= M->buf[w];
+    return 1;
 }
 
 /* Membership of every cell in every needed cone: goal[i] (malloc'd into
@@ -324,18 +296,16 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
         goto cleanup;
     }
     for (i = 0; i < ncells; i++)
-        goal[i] = ((members_at_least(&M, i / FLINT_BITS, 0)
-                    >> (i % FLINT_BITS)) & 1) == 0;
+        goal[i] = ((M.seen[i / FLINT_BITS] >> (i % FLINT_BITS)) & 1) == 0;
 
-    /* Exact redundancy, in ASCII order: drop a cone inside the union of
-       the cones still kept, i.e. every cell of it held by another; its
-       cells computed again rather than kept from the count.  */
-    R->nexact = nn;
+    /* Exact redundancy, in ASCII order; M.seen becomes the union of the
+       kept cones.  */
+    memset(M.seen, 0, sizeof(ulong) * M.words);
+    R->nexact = 0;
     for (k = 0; k < nn; k++)
     {
-        members_cone(&M, R, k);
-        R->exact_needed[k] = !members_take(&M);
-        R->nexact -= !R->exact_needed[k];
+        R->exact_needed[k] = members_keep(&M, R, k);
+        R->nexact += R->exact_needed[k];
     }
 
     plan_eq25(R, goal, g);
