@@ -211,12 +211,21 @@ members_cone(members * M, const wc_plan_t R, slong k)
     _wc_cone_key_cells(M->buf, M->keys + k, &M->X, R->cells);
 }
 
+/* The cells of word w: all but in the last word.  */
+static ulong
+valid(const members * M, slong w)
+{
+    slong n = M->X.count - w * FLINT_BITS;
+
+    return n >= FLINT_BITS ? ~UWORD(0) : (UWORD(1) << n) - 1;
+}
+
 /* M := the bitset index of the cells, M->seen the cells of any needed
    cone, and D_k for every needed cone k.  */
 static int
 needed_members(members * M, wc_plan_t R)
 {
-    slong nn = R->T->nneeded, k, w, e = 0;
+    slong nn = R->T->nneeded, k, w, e = 0, left;
     size_t n = (size_t) R->cells->count + 1;
     int ok;
 
@@ -233,8 +242,11 @@ needed_members(members * M, wc_plan_t R)
         && M->bits != NULL && M->off != NULL && M->keys != NULL;
     if (!ok)
         return 0;
+    left = M->words;    /* the words with a cell not seen yet */
     M->off[nn] = 0;
-    for (k = nn - 1; k >= 0; k--)
+    /* once every cell is seen (often soon: a cone late in ASCII order
+       holds them all), the cones before are the last of none */
+    for (k = nn - 1; k >= 0 && left != 0; k--)
     {
         members_cone(M, R, k);
         for (w = 0; w < M->words; w++)
@@ -247,10 +259,13 @@ needed_members(members * M, wc_plan_t R)
                 M->w[e] = w;
                 M->bits[e++] = x;
                 M->seen[w] |= x;
+                left -= (M->seen[w] | ~valid(M, w)) == ~UWORD(0);
             }
         }
         M->off[k] = e;
     }
+    for (; k >= 0; k--)
+        M->off[k] = e;
     return 1;
 }
 
