@@ -169,93 +169,54 @@ plan_eq25(wc_plan_t R, const int * goal, fmpq * g)
     }
 }
 
-/* The cells of the needed cones as bitsets (planbits.c).  Exact
-   redundancy drops cone k, in ASCII order, when every cell of it is held
-   by another cone still kept: by a kept cone before k or by any cone
-   after k (all of them are still there).  So only the cells whose last
-   cone is k can make k needed, and k is needed iff one of them is in no
-   cone kept before it.  Each cone is computed once, from the last to the
-   first, to find the cells it is the last of (those not yet seen: they
-   are disjoint, so at most count of them), and again only when it is
-   kept, to add its cells to the union of the kept cones.  */
+/* Exact redundancy drops cone k, in ASCII order, when every cell of it
+   is held by another cone still kept: by a kept cone before k or by any
+   cone after k (all of them are still there).  So only the cells whose
+   last cone is k can make k needed, and k is needed iff one of them is
+   in no cone kept before it.  Each cone is computed once, from the last
+   to the first, to find the cells it is the last of (those not seen yet:
+   disjoint, so at most ncells entries), and again only when it is kept,
+   to add its cells to the union of the kept cones.  */
 typedef struct
 {
-    slong nn;
-    wc_cone_key * keys;     /* nn */
-    wc_cell_bits X;
+    slong count, words, ncells;
+    _wc_plan_bits_fn cells;
+    void * ctx;
     ulong * buf;            /* the current cone's cells */
     ulong * seen;           /* the cells of the cones after it */
     slong * w;              /* D_k: the words w[e] of cells bits[e] whose */
     ulong * bits;           /* last cone is k, off[k + 1] <= e < off[k] */
-    slong * off;            /* nn + 1 */
-    slong words;
+    slong * off;            /* count + 1 */
 }
 members;
-
-static void
-members_clear(members * M)
-{
-    free(M->buf);
-    free(M->seen);
-    free(M->w);
-    free(M->bits);
-    free(M->off);
-    _wc_cell_bits_clear(&M->X);
-    _wc_cone_keys_clear(M->keys, M->nn);
-}
-
-/* M->buf := the cells of needed cone k.  */
-static void
-members_cone(members * M, const wc_plan_t R, slong k)
-{
-    _wc_cone_key_cells(M->buf, M->keys + k, &M->X, R->cells);
-}
 
 /* The cells of word w: all but in the last word.  */
 static ulong
 valid(const members * M, slong w)
 {
-    slong n = M->X.count - w * FLINT_BITS;
+    slong n = M->ncells - w * FLINT_BITS;
 
     return n >= FLINT_BITS ? ~UWORD(0) : (UWORD(1) << n) - 1;
 }
 
-/* M := the bitset index of the cells, M->seen the cells of any needed
-   cone, and D_k for every needed cone k.  */
-static int
-needed_members(members * M, wc_plan_t R)
+/* M->seen := the cells of every cone, and D_k for every cone k.  */
+static void
+members_last(members * M)
 {
-    slong nn = R->T->nneeded, k, w, e = 0, left;
-    size_t n = (size_t) R->cells->count + 1;
-    int ok;
+    slong k, w, e = 0, left = M->words;     /* words not all seen */
 
-    M->nn = nn;
-    M->keys = _wc_cone_keys_init(R->cones, nn, R->cells);
-    ok = _wc_cell_bits_init(&M->X, R->cells);
-    M->words = M->X.words;
-    M->buf = malloc(sizeof(ulong) * (M->words + 1));
-    M->seen = calloc(M->words + 1, sizeof(ulong));
-    M->w = malloc(sizeof(slong) * n);
-    M->bits = malloc(sizeof(ulong) * n);
-    M->off = malloc(sizeof(slong) * (nn + 1));
-    ok = ok && M->buf != NULL && M->seen != NULL && M->w != NULL
-        && M->bits != NULL && M->off != NULL && M->keys != NULL;
-    if (!ok)
-        return 0;
-    left = M->words;    /* the words with a cell not seen yet */
-    M->off[nn] = 0;
+    M->off[M->count] = 0;
     /* once every cell is seen (often soon: a cone late in ASCII order
        holds them all), the cones before are the last of none */
-    for (k = nn - 1; k >= 0 && left != 0; k--)
+    for (k = M->count - 1; k >= 0 && left != 0; k--)
     {
-        members_cone(M, R, k);
+        M->cells(M->buf, k, M->ctx);
         for (w = 0; w < M->words; w++)
         {
             ulong x = M->buf[w] & ~M->seen[w];
 
             if (x != 0)
             {
-                /* each entry holds a new cell: at most count of them */
                 M->w[e] = w;
                 M->bits[e++] = x;
                 M->seen[w] |= x;
@@ -266,13 +227,12 @@ needed_members(members * M, wc_plan_t R)
     }
     for (; k >= 0; k--)
         M->off[k] = e;
-    return 1;
 }
 
 /* 1 when cone k is exactly needed: a cell whose last cone is k is in no
    kept cone before it (M->seen, the union of those, then gets k's).  */
 static int
-members_keep(members * M, const wc_plan_t R, slong k)
+members_keep(members * M, slong k)
 {
     slong e, w;
 
@@ -281,10 +241,63 @@ members_keep(members * M, const wc_plan_t R, slong k)
             break;
     if (e == M->off[k])
         return 0;
-    members_cone(M, R, k);
+    M->cells(M->buf, k, M->ctx);
     for (w = 0; w < M->words; w++)
         M->seen[w] |= M->buf[w];
     return 1;
+}
+
+int
+_wc_plan_exact(int * exact, ulong * any, slong count, slong ncells,
+               _wc_plan_bits_fn cells, void * ctx)
+{
+    members M;
+    slong k, n = ncells + 1;
+    int ok;
+
+    M.count = count;
+    M.ncells = ncells;
+    M.words = (ncells + FLINT_BITS - 1) / FLINT_BITS;
+    M.cells = cells;
+    M.ctx = ctx;
+    M.buf = malloc(sizeof(ulong) * (M.words + 1));
+    M.seen = calloc(M.words + 1, sizeof(ulong));
+    M.w = malloc(sizeof(slong) * n);
+    M.bits = malloc(sizeof(ulong) * n);
+    M.off = malloc(sizeof(slong) * (count + 1));
+    ok = M.buf != NULL && M.seen != NULL && M.w != NULL && M.bits != NULL
+        && M.off != NULL;
+    if (ok)
+    {
+        members_last(&M);
+        memcpy(any, M.seen, sizeof(ulong) * M.words);
+        memset(M.seen, 0, sizeof(ulong) * M.words);
+        for (k = 0; k < count; k++)
+            exact[k] = members_keep(&M, k);
+    }
+    free(M.buf);
+    free(M.seen);
+    free(M.w);
+    free(M.bits);
+    free(M.off);
+    return ok;
+}
+
+/* The needed cones' cells for _wc_plan_exact (planbits.c).  */
+typedef struct
+{
+    wc_cone_key * keys;
+    wc_cell_bits X;
+    const wc_cells_struct * A;
+}
+needed_ctx;
+
+static void
+needed_cells(ulong * out, slong k, void * p)
+{
+    needed_ctx * c = p;
+
+    _wc_cone_key_cells(out, c->keys + k, &c->X, c->A);
 }
 
 /* Membership of every cell in every needed cone: goal[i] (malloc'd into
@@ -295,15 +308,21 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
 {
     slong nn = R->T->nneeded, ncells = R->cells->count, i, k;
     int * goal = *goalp = malloc(sizeof(int) * (ncells + 1));
-    members M;
-    int status = WC_OK;
+    ulong * any = malloc(sizeof(ulong) * (ncells / FLINT_BITS + 1));
+    needed_ctx c;
+    int status = WC_OK, ok;
     fmpq g[3];
 
-    memset(&M, 0, sizeof(members));
     for (k = 0; k < 3; k++)
         fmpq_init(g + k);
+    c.A = R->cells;
+    c.keys = _wc_cone_keys_init(R->cones, nn, R->cells);
+    ok = _wc_cell_bits_init(&c.X, R->cells);
     R->exact_needed = malloc(sizeof(int) * (nn + 1));
-    if (goal == NULL || R->exact_needed == NULL || !needed_members(&M, R))
+    if (!ok || goal == NULL || any == NULL || R->exact_needed == NULL
+        || c.keys == NULL
+        || !_wc_plan_exact(R->exact_needed, any, nn, ncells, needed_cells,
+                           &c))
     {
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                               "out of memory (%ld cells, %ld cones)",
@@ -311,23 +330,17 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
         goto cleanup;
     }
     for (i = 0; i < ncells; i++)
-        goal[i] = ((M.seen[i / FLINT_BITS] >> (i % FLINT_BITS)) & 1) == 0;
-
-    /* Exact redundancy, in ASCII order; M.seen becomes the union of the
-       kept cones.  */
-    memset(M.seen, 0, sizeof(ulong) * M.words);
-    R->nexact = 0;
-    for (k = 0; k < nn; k++)
-    {
-        R->exact_needed[k] = members_keep(&M, R, k);
+        goal[i] = ((any[i / FLINT_BITS] >> (i % FLINT_BITS)) & 1) == 0;
+    for (R->nexact = k = 0; k < nn; k++)
         R->nexact += R->exact_needed[k];
-    }
 
     plan_eq25(R, goal, g);
     if ((status = wc_set_from_cells(R->goal, R->cells, goal, err)) == WC_OK)
         status = wc_set_merge(R->goal, R->cells, err);
 cleanup:
-    members_clear(&M);
+    free(any);
+    _wc_cell_bits_clear(&c.X);
+    _wc_cone_keys_clear(c.keys, nn);
     for (k = 0; k < 3; k++)
         fmpq_clear(g + k);
     return status;
