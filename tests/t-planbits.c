@@ -123,9 +123,9 @@ check_foreign(const wc_problem_t P, const wc_cells_t A)
 /* wc_plan's G_goal cells and exact redundancy (bitsets, the cells each
    cone is the last of) against the per-cell counts they replace, here
    from wc_cone_contains (the deliberate independent copy of the old
-   path; check_made has the same): cell i is in G_goal iff no needed cone holds it; in ASCII order
-   a needed cone is dropped when every cell of it is held by another cone
-   still kept.  */
+   path; check_made has the same): cell i is in G_goal iff no needed cone
+   holds it; in ASCII order a needed cone is dropped when every cell of
+   it is held by another cone still kept.  */
 static void
 check_plan(const wc_problem_t P, slong limit)
 {

@@ -183,14 +183,15 @@ typedef struct
     _wc_plan_bits_fn cells;
     void * ctx;
     ulong * buf;            /* the current cone's cells */
-    ulong * seen;           /* the cells of the cones after it */
-    slong * w;              /* D_k: the words w[e] of cells bits[e] whose */
-    ulong * bits;           /* last cone is k, off[k + 1] <= e < off[k] */
+    ulong * seen;           /* the cells of the cones after it, then
+                               those of the kept cones before it */
+    slong * w;              /* the cells whose last cone is k: bits[e] */
+    ulong * bits;           /* of word w[e], off[k + 1] <= e < off[k] */
     slong * off;            /* count + 1 */
 }
 members;
 
-/* The cells of word w: all but in the last word.  */
+/* The bits of word w that are cells: all but in the last word.  */
 static ulong
 valid(const members * M, slong w)
 {

@@ -284,10 +284,10 @@ by_faces(ulong * out, const ulong * cand, const wc_cone_key * K,
 
 /* out := the cells strictly inside every facet of K's cone when its
    relative interior belongs to it (else none), and cand (X) := the other
-   cells of its closure (the boundary), the ANDs of and_facet in one pass over the words
-   when K has at most FUSED facets and equalities; a word's ANDs stop
-   once no cell is left (the cells strictly inside are among the others).
-   Returns 0 when it has more (nothing done).  */
+   cells of its closure (its boundary): the ANDs of and_facet in one pass
+   over the words when K has at most FUSED facets and equalities.  A
+   word's ANDs stop once no cell is left in it (those strictly inside are
+   among them).  Returns 0 when it has more (nothing done).  */
 #define FUSED 64
 static int
 fused_facets(ulong * out, wc_cell_bits * X, const wc_cone_key * K)
