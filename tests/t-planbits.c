@@ -16,7 +16,8 @@
    the deliberate independent reference) and with _wc_cone_key_contains,
    at every cell when there are few, else at a seeded sample of them and
    of the lower-dimensional cells the bitset holds; and wc_plan's G_goal
-   and exact redundancy against per-cell counts (check_plan).  */
+   and exact redundancy against per-cell counts (check_plan, also for 4
+   and 5 fixels), and _wc_plan_exact on made-up cones (check_made).  */
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -32,7 +33,8 @@
 
 #define BIT(b, i) ((int) (((b)[(i) / FLINT_BITS] >> ((i) % FLINT_BITS)) & 1))
 
-static slong checked, boundary, plans;
+static slong checked, boundary, plans, stopped, several, made,
+    made_needed, made_stopped;
 
 /* Compare the bit of cell i of cone k with both references.  */
 static void
@@ -118,18 +120,18 @@ check_foreign(const wc_problem_t P, const wc_cells_t A)
     wc_error_clear(err);
 }
 
-/* wc_plan's G_goal cells and exact redundancy (bitsets and bit-sliced
-   counters) against the per-cell counts they replace, recomputed here
+/* wc_plan's G_goal cells and exact redundancy (bitsets, the cells each
+   cone is the last of) against the per-cell counts they replace, here
    from wc_cone_contains (the deliberate independent copy of the old
-   path): cell i is in G_goal iff no needed cone holds it; in ASCII order
-   a needed cone is dropped when every cell of it is held by another cone
-   still kept.  */
+   path; check_made has the same): cell i is in G_goal iff no needed cone
+   holds it; in ASCII order a needed cone is dropped when every cell of
+   it is held by another cone still kept.  */
 static void
-check_plan(const wc_problem_t P)
+check_plan(const wc_problem_t P, slong limit)
 {
     wc_plan_t R;
     wc_error_t err;
-    slong i, k, nn, * cnt;
+    slong i, k, nn, * cnt, first;
     int * in;
     fmpq g[3];
 
@@ -138,7 +140,7 @@ check_plan(const wc_problem_t P)
     if (wc_plan(R, P, 0, err) != WC_OK)
         wctest_fail_problem(P, NULL, "wc_plan: %s", err->message);
     nn = R->T->nneeded;
-    if (R->cells->count * nn > 200000)
+    if (R->cells->count * nn > limit)
     {
         wc_plan_clear(R);
         wc_error_clear(err);
@@ -161,6 +163,18 @@ check_plan(const wc_problem_t P)
                                 "cones %d", (long) i,
                                 wc_set_contains(R->goal, g), cnt[i] == 0);
     }
+    /* wc_plan stops computing cones, from the last, once they hold
+       every cell: count the plans where it does (the first cone holding
+       cell i is not the last) and those it does not */
+    first = nn;
+    for (i = 0; i < R->cells->count; i++)
+    {
+        for (k = nn - 1; k >= 0 && !in[i * nn + k]; k--)
+            ;
+        first = FLINT_MIN(first, k);
+    }
+    stopped += first > 0;
+    several += R->nexact > 1;
     for (k = 0; k < nn; k++)
     {
         int covered = 1;
@@ -181,6 +195,137 @@ check_plan(const wc_problem_t P)
     free(cnt);
     wc_plan_clear(R);
     wc_error_clear(err);
+}
+
+/* _wc_plan_exact on made-up cones: random bitsets of every kind
+   (empty, every cell, sparse, dense, runs of cells, copies, subsets and
+   unions of earlier cones) over 0 to 2000 cells, up to 300 cones,
+   against the per-cell counts it replaces (the same independent copy as
+   check_plan's: drop a cone, in order, when each of its cells is held by
+   at least one other cone still kept); each cone asked for at most
+   twice.  */
+typedef struct
+{
+    const ulong * bits;
+    slong words, * calls;
+}
+made_ctx;
+
+static void
+made_cells(ulong * out, slong k, void * p)
+{
+    made_ctx * c = p;
+
+    memcpy(out, c->bits + k * c->words, sizeof(ulong) * c->words);
+    c->calls[k]++;
+}
+
+static void
+made_cone(ulong * b, slong k, slong ncells, slong words, int sparse)
+{
+    static const slong few[] = { 2, 2, 2, 5, 6, 7, 8 };
+    slong kind = sparse ? few[wctest_randint(0, 6)] : wctest_randint(0, 8);
+    slong i, lo, hi, j = 0;
+    ulong * prev = b - words * (k > 0 ? wctest_randint(1, k) : 0);
+
+    if (k > 0)
+        j = wctest_randint(0, k - 1);
+    for (i = 0; i < ncells; i++)
+    {
+        int in = 0;
+
+        if (kind == 1)
+            in = 1;
+        else if (kind == 2)
+            in = wctest_chance(1, sparse ? 6 : 20);
+        else if (kind == 3)
+            in = wctest_chance(1, 2);
+        else if (kind == 4)
+            in = !wctest_chance(1, 30);
+        else if (kind >= 6 && k > 0)
+        {
+            in = BIT(prev, i);
+            if (kind == 7)
+                in = in && wctest_chance(3, 4);
+            else if (kind == 8)
+                in = in || BIT(b - words * (k - j), i);
+        }
+        b[i / FLINT_BITS] |= (ulong) in << (i % FLINT_BITS);
+    }
+    if (kind == 5 && ncells > 0)
+    {
+        lo = wctest_randint(0, ncells - 1);
+        hi = wctest_randint(lo, sparse ? FLINT_MIN(lo + 40, ncells - 1)
+                            : ncells - 1);
+        for (i = lo; i <= hi; i++)
+            b[i / FLINT_BITS] |= UWORD(1) << (i % FLINT_BITS);
+    }
+}
+
+static void
+check_made(void)
+{
+    static const slong sizes[] = { 0, 1, 2, 63, 64, 65, 127, 128, 129 };
+    slong ncells = wctest_chance(1, 2) ? sizes[wctest_randint(0, 8)]
+        : wctest_randint(1, 2000);
+    slong count = wctest_chance(1, 4) ? wctest_randint(0, 3)
+        : wctest_randint(4, 300);
+    slong words = (ncells + FLINT_BITS - 1) / FLINT_BITS, i, k, first;
+    ulong * bits = calloc(count * words + 1, sizeof(ulong));
+    ulong * any = malloc(sizeof(ulong) * (ncells / FLINT_BITS + 1));
+    slong * cnt = calloc(ncells + 1, sizeof(slong));
+    slong * calls = calloc(count + 1, sizeof(slong));
+    int * exact = malloc(sizeof(int) * (count + 1));
+    /* sparse: the cells are seen a few at a time, from the last cone */
+    int sparse = wctest_chance(1, 2);
+    made_ctx c;
+
+    for (k = 0; k < count; k++)
+        made_cone(bits + k * words, k, ncells, words, sparse);
+    c.bits = bits;
+    c.words = words;
+    c.calls = calls;
+    if (!_wc_plan_exact(exact, any, count, ncells, made_cells, &c))
+        wctest_fail("_wc_plan_exact: out of memory");
+    for (k = 0; k < count; k++)
+        for (i = 0; i < ncells; i++)
+            cnt[i] += BIT(bits + k * words, i);
+    /* the cones from the last hold every cell before the first: count
+       the cases where the early stop cuts */
+    for (i = 0, first = count; i < ncells; i++)
+    {
+        for (k = count - 1; k >= 0 && !BIT(bits + k * words, i); k--)
+            ;
+        first = FLINT_MIN(first, k);
+    }
+    made_stopped += first > 0;
+    for (i = 0; i < ncells; i++)
+        if (BIT(any, i) != (cnt[i] > 0))
+            wctest_fail("%ld cells, %ld cones: cell %ld in a cone %d, by "
+                        "the counts %d", (long) ncells, (long) count,
+                        (long) i, BIT(any, i), cnt[i] > 0);
+    for (k = 0; k < count; k++)
+    {
+        const ulong * b = bits + k * words;
+        int covered = 1;
+
+        for (i = 0; i < ncells && covered; i++)
+            covered = !BIT(b, i) || cnt[i] >= 2;
+        if (exact[k] != !covered || calls[k] > 2)
+            wctest_fail("%ld cells, %ld cones: cone %ld exactly needed %d, "
+                        "by the counts %d (%ld calls)", (long) ncells,
+                        (long) count, (long) k, exact[k], !covered,
+                        (long) calls[k]);
+        for (i = 0; i < ncells && covered; i++)
+            cnt[i] -= BIT(b, i);
+        made++;
+        made_needed += exact[k];
+    }
+    free(bits);
+    free(any);
+    free(cnt);
+    free(calls);
+    free(exact);
 }
 
 static void
@@ -233,9 +378,10 @@ check_problem(const wc_problem_t P)
 int
 main(void)
 {
-    slong iter, iters = wctest_iters(30);
+    slong iter, iters;
 
     wctest_init("t-planbits");
+    iters = wctest_iters(30);
     for (iter = 0; iter < iters; iter++)
     {
         wc_problem_t P;
@@ -247,12 +393,32 @@ main(void)
         wc_problem_init(P);
         wctest_random_problem(P, 1, nmax);
         check_problem(P);
-        check_plan(P);
+        check_plan(P, 200000);
         wc_problem_clear(P);
     }
+    /* plans of more cones (4 and 5 fixels: 32 and 80), fewer of them;
+       iteration iter's seed again (WC_TEST_ITER runs both) */
+    for (iter = 0; iter < iters / 6; iter++)
+    {
+        wc_problem_t P;
+
+        if (!wctest_iter(iter))
+            continue;
+        wc_problem_init(P);
+        wctest_random_problem(P, 4, 5);
+        check_plan(P, 4000000);
+        wc_problem_clear(P);
+    }
+    for (iter = 0; iter < 10 * iters; iter++)
+        if (wctest_iter(iter))
+            check_made();
     printf("t-planbits: %ld problems, %ld cell memberships checked (%ld on "
-           "a boundary), %ld plans recounted\n", (long) iters,
-           (long) checked, (long) boundary, (long) plans);
+           "a boundary), %ld plans recounted (%ld stopped early, %ld with "
+           "several cones exactly needed)\n", (long) iters, (long) checked,
+           (long) boundary, (long) plans, (long) stopped, (long) several);
+    printf("t-planbits: %ld made-up cones, %ld exactly needed, %ld sets "
+           "stopped early\n", (long) made, (long) made_needed,
+           (long) made_stopped);
     flint_cleanup();
     return 0;
 }

@@ -169,135 +169,136 @@ plan_eq25(wc_plan_t R, const int * goal, fmpq * g)
     }
 }
 
-/* The cells of the needed cones as bitsets (planbits.c), computed a
-   cone at a time when needed and never stored: how many kept cones hold
-   each cell is a bit-sliced counter (bit i % FLINT_BITS of level b of
-   word i / FLINT_BITS is bit b of cell i's count, levels bits), so a cone is
-   added or removed a word of cells at a time.  The levels of a word are
-   next to each other: ctr[w * levels + b].  */
+/* Exact redundancy drops cone k, in ASCII order, when every cell of it
+   is held by another cone still kept: by a kept cone before k or by any
+   cone after k (all of them are still there).  So only the cells whose
+   last cone is k can make k needed, and k is needed iff one of them is
+   in no cone kept before it.  Each cone is computed once, from the last
+   to the first, to find the cells it is the last of (those not seen yet:
+   disjoint, so at most ncells entries), and again only when it is kept,
+   to add its cells to the union of the kept cones.  */
 typedef struct
 {
-    slong nn;
-    wc_cone_key * keys;     /* nn */
-    wc_cell_bits X;
+    slong count, words, ncells;
+    _wc_plan_bits_fn cells;
+    void * ctx;
     ulong * buf;            /* the current cone's cells */
-    ulong * ctr;
-    slong levels, words;
+    ulong * seen;           /* the cells of the cones after it, then
+                               those of the kept cones before it */
+    slong * w;              /* the cells whose last cone is k: bits[e] */
+    ulong * bits;           /* of word w[e], off[k + 1] <= e < off[k] */
+    slong * off;            /* count + 1 */
 }
 members;
 
-static void
-members_clear(members * M)
-{
-    free(M->buf);
-    free(M->ctr);
-    _wc_cell_bits_clear(&M->X);
-    _wc_cone_keys_clear(M->keys, M->nn);
-}
-
-/* Add (sign 1) or remove (-1) the cells x of word w to the counts.  */
-static void
-members_count(members * M, slong w, ulong x, int sign)
-{
-    slong b;
-
-    ulong * c = M->ctr + w * M->levels;
-
-    if (sign > 0)
-        for (b = 0; b < M->levels; b++)
-        {
-            ulong carry = c[b] & x;
-
-            c[b] ^= x;
-            x = carry;
-        }
-    else
-        for (b = 0; b < M->levels; b++)
-        {
-            ulong carry = ~c[b] & x;
-
-            c[b] ^= x;
-            x = carry;
-        }
-}
-
-/* The cells of word w whose count is at least 2 (start 1) or nonzero
-   (start 0).  */
+/* The bits of word w that are cells: all but in the last word.  */
 static ulong
-members_at_least(const members * M, slong w, slong start)
+valid(const members * M, slong w)
 {
-    ulong r = 0;
-    slong b;
+    slong n = M->ncells - w * FLINT_BITS;
 
-    for (b = start; b < M->levels; b++)
-        r |= M->ctr[w * M->levels + b];
-    return r;
+    return n >= FLINT_BITS ? ~UWORD(0) : (UWORD(1) << n) - 1;
 }
 
-/* M->buf := the cells of needed cone k.  */
+/* M->seen := the cells of every cone, and D_k for every cone k.  */
 static void
-members_cone(members * M, const wc_plan_t R, slong k)
+members_last(members * M)
 {
-    _wc_cone_key_cells(M->buf, M->keys + k, &M->X, R->cells);
+    slong k, w, e = 0, left = M->words;     /* words not all seen */
+
+    M->off[M->count] = 0;
+    /* once every cell is seen (often soon: a cone late in ASCII order
+       holds them all), the cones before are the last of none */
+    for (k = M->count - 1; k >= 0 && left != 0; k--)
+    {
+        M->cells(M->buf, k, M->ctx);
+        for (w = 0; w < M->words; w++)
+        {
+            ulong x = M->buf[w] & ~M->seen[w];
+
+            if (x != 0)
+            {
+                M->w[e] = w;
+                M->bits[e++] = x;
+                M->seen[w] |= x;
+                left -= (M->seen[w] | ~valid(M, w)) == ~UWORD(0);
+            }
+        }
+        M->off[k] = e;
+    }
+    for (; k >= 0; k--)
+        M->off[k] = e;
 }
 
-/* M := the bitset index of the cells, and every cell counted in every
-   needed cone.  */
+/* 1 when cone k is exactly needed: a cell whose last cone is k is in no
+   kept cone before it (M->seen, the union of those, then gets k's).  */
 static int
-needed_members(members * M, wc_plan_t R)
+members_keep(members * M, slong k)
 {
-    slong nn = R->T->nneeded, k, w;
+    slong e, w;
+
+    for (e = M->off[k + 1]; e < M->off[k]; e++)
+        if ((M->bits[e] & ~M->seen[M->w[e]]) != 0)
+            break;
+    if (e == M->off[k])
+        return 0;
+    M->cells(M->buf, k, M->ctx);
+    for (w = 0; w < M->words; w++)
+        M->seen[w] |= M->buf[w];
+    return 1;
+}
+
+int
+_wc_plan_exact(int * exact, ulong * any, slong count, slong ncells,
+               _wc_plan_bits_fn cells, void * ctx)
+{
+    members M;
+    slong k, n = ncells + 1;
     int ok;
 
-    M->nn = nn;
-    M->keys = _wc_cone_keys_init(R->cones, nn, R->cells);
-    ok = _wc_cell_bits_init(&M->X, R->cells);
-    for (M->levels = 1; (WORD(1) << M->levels) <= nn; M->levels++)
-        ;
-    M->words = M->X.words;
-    M->ctr = calloc((size_t) M->levels * M->words + 1, sizeof(ulong));
-    M->buf = malloc(sizeof(ulong) * (M->words + 1));
-    ok = ok && M->buf != NULL && M->ctr != NULL && M->keys != NULL;
-    for (k = 0; k < nn && ok; k++)
+    M.count = count;
+    M.ncells = ncells;
+    M.words = (ncells + FLINT_BITS - 1) / FLINT_BITS;
+    M.cells = cells;
+    M.ctx = ctx;
+    M.buf = malloc(sizeof(ulong) * (M.words + 1));
+    M.seen = calloc(M.words + 1, sizeof(ulong));
+    M.w = malloc(sizeof(slong) * n);
+    M.bits = malloc(sizeof(ulong) * n);
+    M.off = malloc(sizeof(slong) * (count + 1));
+    ok = M.buf != NULL && M.seen != NULL && M.w != NULL && M.bits != NULL
+        && M.off != NULL;
+    if (ok)
     {
-        members_cone(M, R, k);
-        for (w = 0; w < M->words; w++)
-            if (M->buf[w] != 0)
-                members_count(M, w, M->buf[w], 1);
+        members_last(&M);
+        memcpy(any, M.seen, sizeof(ulong) * M.words);
+        memset(M.seen, 0, sizeof(ulong) * M.words);
+        for (k = 0; k < count; k++)
+            exact[k] = members_keep(&M, k);
     }
+    free(M.buf);
+    free(M.seen);
+    free(M.w);
+    free(M.bits);
+    free(M.off);
     return ok;
 }
 
-/* Remove the cone M->buf from the counts when every cell of it is held
-   by another kept cone, and return 1; else leave the counts and return
-   0.  One pass: each word is tested (count at least 2, the levels from
-   1 up until they hold the word's cells), then taken off; a cone that is
-   not covered (rare: redundant cones are most) is added back.  */
-static int
-members_take(members * M)
+/* The needed cones' cells for _wc_plan_exact (planbits.c).  */
+typedef struct
 {
-    slong w;
-    int covered = 1;
+    wc_cone_key * keys;
+    wc_cell_bits X;
+    const wc_cells_struct * A;
+}
+needed_ctx;
 
-    for (w = 0; w < M->words; w++)
-    {
-        ulong x = M->buf[w], r = 0;
-        const ulong * c = M->ctr + w * M->levels;
-        slong b;
+static void
+needed_cells(ulong * out, slong k, void * p)
+{
+    needed_ctx * c = p;
 
-        if (x == 0)
-            continue;
-        for (b = 1; b < M->levels; b++)
-            r |= c[b];
-        if ((x & ~r) != 0)
-            covered = 0;
-        members_count(M, w, x, -1);
-    }
-    if (!covered)
-        for (w = 0; w < M->words; w++)
-            if (M->buf[w] != 0)
-                members_count(M, w, M->buf[w], 1);
-    return covered;
+    _wc_cone_key_cells(out, c->keys + k, &c->X, c->A);
 }
 
 /* Membership of every cell in every needed cone: goal[i] (malloc'd into
@@ -308,15 +309,21 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
 {
     slong nn = R->T->nneeded, ncells = R->cells->count, i, k;
     int * goal = *goalp = malloc(sizeof(int) * (ncells + 1));
-    members M;
-    int status = WC_OK;
+    ulong * any = malloc(sizeof(ulong) * (ncells / FLINT_BITS + 1));
+    needed_ctx c;
+    int status = WC_OK, ok;
     fmpq g[3];
 
-    memset(&M, 0, sizeof(members));
     for (k = 0; k < 3; k++)
         fmpq_init(g + k);
+    c.A = R->cells;
+    c.keys = _wc_cone_keys_init(R->cones, nn, R->cells);
+    ok = _wc_cell_bits_init(&c.X, R->cells);
     R->exact_needed = malloc(sizeof(int) * (nn + 1));
-    if (goal == NULL || R->exact_needed == NULL || !needed_members(&M, R))
+    if (!ok || goal == NULL || any == NULL || R->exact_needed == NULL
+        || c.keys == NULL
+        || !_wc_plan_exact(R->exact_needed, any, nn, ncells, needed_cells,
+                           &c))
     {
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                               "out of memory (%ld cells, %ld cones)",
@@ -324,25 +331,17 @@ plan_goal(wc_plan_t R, int ** goalp, wc_error_t err)
         goto cleanup;
     }
     for (i = 0; i < ncells; i++)
-        goal[i] = ((members_at_least(&M, i / FLINT_BITS, 0)
-                    >> (i % FLINT_BITS)) & 1) == 0;
-
-    /* Exact redundancy, in ASCII order: drop a cone inside the union of
-       the cones still kept, i.e. every cell of it held by another; its
-       cells computed again rather than kept from the count.  */
-    R->nexact = nn;
-    for (k = 0; k < nn; k++)
-    {
-        members_cone(&M, R, k);
-        R->exact_needed[k] = !members_take(&M);
-        R->nexact -= !R->exact_needed[k];
-    }
+        goal[i] = ((any[i / FLINT_BITS] >> (i % FLINT_BITS)) & 1) == 0;
+    for (R->nexact = k = 0; k < nn; k++)
+        R->nexact += R->exact_needed[k];
 
     plan_eq25(R, goal, g);
     if ((status = wc_set_from_cells(R->goal, R->cells, goal, err)) == WC_OK)
         status = wc_set_merge(R->goal, R->cells, err);
 cleanup:
-    members_clear(&M);
+    free(any);
+    _wc_cell_bits_clear(&c.X);
+    _wc_cone_keys_clear(c.keys, nn);
     for (k = 0; k < 3; k++)
         fmpq_clear(g + k);
     return status;

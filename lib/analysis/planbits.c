@@ -296,13 +296,15 @@ by_faces(ulong * out, const ulong * cand, const wc_cone_key * K,
     return 1;
 }
 
-/* cand, strict (X) := the cells of the closure of K's cone and those
-   strictly inside every facet, as the ANDs of and_facet, in one pass
-   over the words when K has at most FUSED facets and equalities.
-   Returns 0 when it has more (nothing done).  */
+/* out := the cells strictly inside every facet of K's cone when its
+   relative interior belongs to it (else none), and cand (X) := the other
+   cells of its closure (its boundary): the ANDs of and_facet in one pass
+   over the words when K has at most FUSED facets and equalities.  A
+   word's ANDs stop once no cell is left in it (those strictly inside are
+   among them).  Returns 0 when it has more (nothing done).  */
 #define FUSED 64
 static int
-fused_facets(wc_cell_bits * X, const wc_cone_key * K)
+fused_facets(ulong * out, wc_cell_bits * X, const wc_cone_key * K)
 {
     const ulong * z[FUSED], * fz[FUSED], * in[FUSED];
     slong nz = 0, nin = 0, j, w, last = X->count % FLINT_BITS;
@@ -330,16 +332,16 @@ fused_facets(wc_cell_bits * X, const wc_cone_key * K)
 
         if (w == X->words - 1 && last != 0)
             c = (UWORD(1) << last) - 1;
-        for (j = 0; j < K->ne; j++)
+        for (j = 0; j < nz && c != 0; j++)
             c &= z[j][w];
         st = open ? c : 0;
-        for (j = 0; j < nin; j++)
+        for (j = 0; j < nin && c != 0; j++)
         {
             c &= fz[j][w] | in[j][w];
             st &= in[j][w];
         }
-        X->cand[w] = c;
-        X->strict[w] = st;
+        out[w] = K->top ? st : 0;
+        X->cand[w] = c & ~st;
     }
     return 1;
 }
@@ -350,32 +352,35 @@ _wc_cone_key_cells(ulong * out, const wc_cone_key * K, wc_cell_bits * X,
 {
     slong j, w, words = X->words;
 
-    memset(out, 0, sizeof(ulong) * words);
     if (K->C->empty || X->count == 0)
-        return;
-    for (w = 0; w < words; w++)
-        X->cand[w] = ~UWORD(0);
-    if (X->count % FLINT_BITS != 0)
-        X->cand[words - 1] = (UWORD(1) << (X->count % FLINT_BITS)) - 1;
-    if (!K->usable)
     {
-        by_lattice(out, X->cand, K, X, A);
+        memset(out, 0, sizeof(ulong) * words);
         return;
     }
-    if (!fused_facets(X, K))
+    if (!K->usable || !fused_facets(out, X, K))
     {
+        memset(out, 0, sizeof(ulong) * words);
+        for (w = 0; w < words; w++)
+            X->cand[w] = ~UWORD(0);
+        if (X->count % FLINT_BITS != 0)
+            X->cand[words - 1] = (UWORD(1) << (X->count % FLINT_BITS)) - 1;
+        if (!K->usable)
+        {
+            by_lattice(out, X->cand, K, X, A);
+            return;
+        }
         memcpy(X->strict, X->cand, sizeof(ulong) * words);
         for (j = 0; j < K->ne; j++)
             and_facet(X, K->plane[K->nf + j], 0, 1);
         for (j = 0; j < K->nf; j++)
             and_facet(X, K->plane[j], K->orient[j], 0);
-    }
-    /* the boundary: candidates not strictly inside every facet */
-    for (w = 0; w < words; w++)
-    {
-        if (K->top)
-            out[w] = X->strict[w];
-        X->cand[w] &= ~X->strict[w];
+        /* the boundary: candidates not strictly inside every facet */
+        for (w = 0; w < words; w++)
+        {
+            if (K->top)
+                out[w] = X->strict[w];
+            X->cand[w] &= ~X->strict[w];
+        }
     }
     if (!by_faces(out, X->cand, K, X))
         by_lattice(out, X->cand, K, X, A);

@@ -137,6 +137,15 @@ void _wc_plan_add_adj(void * ctx, ulong from, ulong to, slong outcome);
 wc_plan_verdict _wc_plan_graph_verdict(const ulong * adj, slong n,
                                        ulong * cycle, slong * ncycle);
 
+/* Exact redundancy (plan.c): exact[k] := 1 when cone k of count is not
+   dropped, in order, as inside the union of the cones still kept; any
+   (ncells / FLINT_BITS + 1 words) := the cells of any cone.  cells(out,
+   k, ctx) writes the cells of cone k as a bitset (bit i for cell i); it
+   is called at most twice per cone.  Returns 0 when out of memory.  */
+typedef void (* _wc_plan_bits_fn)(ulong * out, slong k, void * ctx);
+int _wc_plan_exact(int * exact, ulong * any, slong count, slong ncells,
+                   _wc_plan_bits_fn cells, void * ctx);
+
 /* wc_problem_check, and at most WC_PLAN_MAX_FIXELS fixels
    (WC_PLAN_MAX_FIXELS_COMPLETE when complete) (plan.c).  */
 int _wc_plan_check_size(const wc_problem_t P, int complete, wc_error_t err);
