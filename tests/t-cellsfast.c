@@ -151,12 +151,17 @@ check_bits(const wc_cells_t A)
     {
         for (s = -1; s <= 1; s++)
         {
-            const ulong * b = X.bits + (3 * p + s + 1) * X.words;
+            const ulong * neg = X.bits + 2 * p * X.words;
+            const ulong * pos = neg + X.words;
 
             for (i = 0; i < X.words * FLINT_BITS; i++)
             {
-                int bit = (int) ((b[i / FLINT_BITS] >> (i % FLINT_BITS)) & 1);
-                int want = i < A->count && _wc_cells_sign(A, i, p) == s;
+                slong w = i / FLINT_BITS;
+                ulong b = s < 0 ? neg[w] : s > 0 ? pos[w]
+                    : ~(neg[w] | pos[w]);
+                int bit = (int) ((b >> (i % FLINT_BITS)) & 1);
+                int want = i < A->count ? _wc_cells_sign(A, i, p) == s
+                    : s == 0;   /* past the last cell: off - and + */
 
                 if (bit != want)
                     wctest_fail("bits: plane %ld sign %ld cell %ld: %d, "

@@ -5,11 +5,13 @@
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   The cells are indexed by their sign on every plane: for plane p, three
-   bitsets over the cells (sign -, 0, +).  A cone whose facets and
-   equalities are planes of the arrangement holds no cell outside the AND
-   of one or two of them per facet and equality, and every cell strictly
-   inside each facet when its relative interior belongs to it; so a cone
+   The cells are indexed by their sign on every plane: for plane p, two
+   bitsets over the cells (sign - and +; the cells on p are in neither).
+   A cone whose facets and equalities are planes of the arrangement holds
+   no cell outside the AND, over its facets and equalities, of the cells
+   not on the wrong side (in neither, for an equality), and every cell
+   strictly inside each facet when its relative interior belongs to it;
+   so a cone
    costs a few passes over count / FLINT_BITS words, and the face lattice
    (wc_cone_contains) is asked about the cells on its boundary only.  The
    answers are those of _wc_cone_key_contains, cell by cell.  */
@@ -23,7 +25,12 @@
 
 #include "analysis/planparts.h"
 
-#define BITS(X, p, s) ((X)->bits + (3 * (p) + (s) + 1) * (X)->words)
+/* The bitset of the cells with sign s (-1 or 1) on plane p.  */
+#define BITS(X, p, s) ((X)->bits + (2 * (p) + ((s) > 0)) * (X)->words)
+
+/* Word w of the bitset of the cells on plane p (and bits past the last
+   cell: callers mask them).  */
+#define ZERO(X, p, w) (~(BITS(X, p, -1)[w] | BITS(X, p, 1)[w]))
 
 #if FLINT_BITS == 64
 #define FAST_BITS 1
@@ -95,6 +102,9 @@ block_bits(ulong * neg, ulong * pos, const wc_cells_t A, slong lo, slong n,
 #define FAST_BITS 0
 #endif
 
+/* Words of cells done together by _wc_cell_bits_init: a cache line.  */
+#define GROUP 8
+
 int
 _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
 {
@@ -106,34 +116,47 @@ _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
     X->words = (A->count + FLINT_BITS - 1) / FLINT_BITS;
     for (k = 0; k < 3; k++)
         fmpq_init(X->g + k);
-    X->bits = calloc((size_t) 3 * np * X->words + 1, sizeof(ulong));
+    X->bits = malloc(sizeof(ulong) * ((size_t) 2 * np * X->words + 1));
     X->cand = malloc(sizeof(ulong) * (X->words + 1));
     X->strict = malloc(sizeof(ulong) * (X->words + 1));
     if (X->bits == NULL || X->cand == NULL || X->strict == NULL)
         return 0;
-    /* a word of cells at a time: their rows are near in memory */
-    for (w = 0; w < X->words; w++)
-    {
-        slong lo = w * FLINT_BITS, n = FLINT_MIN(A->count - lo, FLINT_BITS);
-        /* n < FLINT_BITS only in the last word */
-        ulong valid = n == FLINT_BITS ? ~UWORD(0) : (UWORD(1) << n) - 1;
 #if FAST_BITS
-        ulong neg[64], pos[64];
+    /* GROUP words of cells at a time (their keys are near in memory),
+       so that each plane's bitsets get whole cache lines */
+    for (w = 0; w < X->words; w += GROUP)
+    {
+        slong nw = FLINT_MIN(GROUP, X->words - w), t, j;
+        ulong neg[GROUP][64], pos[GROUP][64];
 
         for (p = 0; p < np; p += 64)
         {
-            slong np0 = FLINT_MIN(64, np - p), j;
-
-            block_bits(neg, pos, A, lo, n, p);
-            for (j = 0; j < np0; j++)
+            for (t = 0; t < nw; t++)
             {
-                BITS(X, p + j, -1)[w] = neg[63 - j];
-                BITS(X, p + j, 1)[w] = pos[63 - j];
-                BITS(X, p + j, 0)[w] = ~(neg[63 - j] | pos[63 - j]) & valid;
+                slong lo = (w + t) * FLINT_BITS;
+
+                block_bits(neg[t], pos[t], A,
+                           lo, FLINT_MIN(A->count - lo, FLINT_BITS), p);
+            }
+            for (j = 0; j < FLINT_MIN(64, np - p); j++)
+            {
+                ulong * bn = BITS(X, p + j, -1) + w;
+                ulong * bp = BITS(X, p + j, 1) + w;
+
+                for (t = 0; t < nw; t++)
+                {
+                    bn[t] = neg[t][63 - j];
+                    bp[t] = pos[t][63 - j];
+                }
             }
         }
-        (void) i;
+    }
+    (void) i;
 #else
+    for (w = 0; w < X->words; w++)
+    {
+        slong lo = w * FLINT_BITS, n = FLINT_MIN(A->count - lo, FLINT_BITS);
+
         for (p = 0; p < np; p++)
         {
             ulong neg = 0, pos = 0;
@@ -147,10 +170,9 @@ _wc_cell_bits_init(wc_cell_bits * X, const wc_cells_t A)
             }
             BITS(X, p, -1)[w] = neg;
             BITS(X, p, 1)[w] = pos;
-            BITS(X, p, 0)[w] = ~(neg | pos) & valid;
         }
-#endif
     }
+#endif
     return 1;
 }
 
@@ -168,20 +190,21 @@ _wc_cell_bits_clear(wc_cell_bits * X)
 }
 
 /* cand &= the cells on the side orient * sign <= 0 of plane p (sign 0
-   for an equality: eq != 0); strict &= the cells strictly inside.  */
+   for an equality: eq != 0); strict &= the cells strictly inside (cand
+   and strict hold cells only).  */
 static void
 and_facet(wc_cell_bits * X, slong p, int orient, int eq)
 {
-    const ulong * z = BITS(X, p, 0);
     const ulong * in = orient > 0 ? BITS(X, p, -1) : BITS(X, p, 1);
+    const ulong * out = orient > 0 ? BITS(X, p, 1) : BITS(X, p, -1);
     slong w;
 
     if (eq)
     {
         for (w = 0; w < X->words; w++)
         {
-            X->cand[w] &= z[w];
-            X->strict[w] &= z[w];
+            X->cand[w] &= ZERO(X, p, w);
+            X->strict[w] &= ZERO(X, p, w);
         }
         return;
     }
@@ -193,7 +216,7 @@ and_facet(wc_cell_bits * X, slong p, int orient, int eq)
     }
     for (w = 0; w < X->words; w++)
     {
-        X->cand[w] &= z[w] | in[w];
+        X->cand[w] &= ~out[w];
         X->strict[w] &= in[w];
     }
 }
@@ -278,7 +301,7 @@ by_faces(ulong * out, const ulong * cand, const wc_cone_key * K,
         if (left == 0)
             continue;
         for (j = 0; j < nf; j++)
-            z[j] = BITS(X, K->plane[j], 0)[w];
+            z[j] = ZERO(X, K->plane[j], w);     /* left masks it */
         for (f = 0; f < nfaces && left != 0; f++)
         {
             const ulong * t = tab + f * fw;
@@ -306,14 +329,17 @@ by_faces(ulong * out, const ulong * cand, const wc_cone_key * K,
 static int
 fused_facets(ulong * out, wc_cell_bits * X, const wc_cone_key * K)
 {
-    const ulong * z[FUSED], * fz[FUSED], * in[FUSED];
+    const ulong * zn[FUSED], * zp[FUSED], * beyond[FUSED], * in[FUSED];
     slong nz = 0, nin = 0, j, w, last = X->count % FLINT_BITS;
     int open = 1;
 
     if (K->nf + K->ne > FUSED)
         return 0;
     for (j = 0; j < K->ne; j++)
-        z[nz++] = BITS(X, K->plane[K->nf + j], 0);
+    {
+        zn[nz] = BITS(X, K->plane[K->nf + j], -1);
+        zp[nz++] = BITS(X, K->plane[K->nf + j], 1);
+    }
     for (j = 0; j < K->nf; j++)
     {
         slong p = K->plane[j];
@@ -322,7 +348,7 @@ fused_facets(ulong * out, wc_cell_bits * X, const wc_cone_key * K)
             open = 0;   /* a zero normal: none strictly inside */
         else
         {
-            fz[nin] = BITS(X, p, 0);
+            beyond[nin] = K->orient[j] > 0 ? BITS(X, p, 1) : BITS(X, p, -1);
             in[nin++] = K->orient[j] > 0 ? BITS(X, p, -1) : BITS(X, p, 1);
         }
     }
@@ -333,11 +359,11 @@ fused_facets(ulong * out, wc_cell_bits * X, const wc_cone_key * K)
         if (w == X->words - 1 && last != 0)
             c = (UWORD(1) << last) - 1;
         for (j = 0; j < nz && c != 0; j++)
-            c &= z[j][w];
+            c &= ~(zn[j][w] | zp[j][w]);
         st = open ? c : 0;
         for (j = 0; j < nin && c != 0; j++)
         {
-            c &= fz[j][w] | in[j][w];
+            c &= ~beyond[j][w];
             st &= in[j][w];
         }
         out[w] = K->top ? st : 0;

@@ -73,13 +73,15 @@ int _wc_cone_key_contains(const wc_cone_key * K, const wc_cells_t A,
                           slong i, const fmpq * g);
 
 /* The same for every cell at once (planbits.c): the cells' signs on
-   each plane as three bitsets (-, 0, +) over the cells, bit i of word
-   i / FLINT_BITS for cell i; a cone is a few ANDs of them, and only its
-   boundary cells reach wc_cone_contains.  */
+   each plane as two bitsets (-, +) over the cells, bit i of word
+   i / FLINT_BITS for cell i (the cells on the plane are the others); a
+   cone is a few ANDs of them, and only its boundary cells reach
+   wc_cone_contains.  */
 typedef struct
 {
     slong count, nplanes, words;
-    ulong * bits;           /* 3 nplanes words-word bitsets */
+    ulong * bits;           /* 2 nplanes words-word bitsets: plane p's -
+                               at 2 p, its + at 2 p + 1 */
     ulong * cand, * strict; /* scratch */
     fmpq g[3];
 }
