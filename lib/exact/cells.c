@@ -79,7 +79,7 @@ typedef struct
     slong cap;              /* cells expected */
     slong count;
     uint64_t * key;         /* cap x kw */
-    fmpz * pt;              /* cap x 3 */
+    fmpz_mat_struct * pt;   /* cap x 3: the points */
     slong * dim;            /* cap */
     slong size;             /* hash table slots, a power of two */
     uint64_t * slot;        /* 0, or the high half of a cell's hash and
@@ -91,8 +91,10 @@ typedef struct
 }
 cell_list;
 
+/* L := an empty list for cap cells on m planes, their points to go to
+   P (cap x 3).  */
 static int
-cell_list_init(cell_list * L, slong m, slong cap)
+cell_list_init(cell_list * L, slong m, slong cap, fmpz_mat_t P)
 {
     slong i;
 
@@ -100,8 +102,8 @@ cell_list_init(cell_list * L, slong m, slong cap)
     L->kw = WC_CELLS_KEY_WORDS(m);
     L->cap = cap;
     L->count = 0;
+    L->pt = P;
     L->key = malloc(sizeof(uint64_t) * ((size_t) cap * L->kw + 1));
-    L->pt = _fmpz_vec_init(3 * (cap + 1));
     L->dim = flint_malloc(sizeof(slong) * (cap + 1));
     L->size = _wc_hash_size(2 * cap + 2);
     L->slot = calloc(L->size, sizeof(uint64_t));
@@ -126,7 +128,6 @@ static void
 cell_list_clear(cell_list * L)
 {
     free(L->key);
-    _fmpz_vec_clear(L->pt, 3 * (L->cap + 1));
     flint_free(L->dim);
     free(L->slot);
     flint_free(L->cur);
@@ -152,7 +153,7 @@ cell_list_update(cell_list * L, const _wc_face_struct * F)
 
 /* Look the current key up: return the index of the equal cell, or -1
    when it is new (it is then added, with dimension d, at index *at; its
-   point is to be written to L->pt + 3 * *at), or -2 when there is no
+   point is to be written to row *at of L->pt), or -2 when there is no
    room.  */
 static slong
 cell_list_add(cell_list * L, slong d, slong * at)
@@ -391,8 +392,8 @@ collect_face(void * data, const _wc_face_struct * F, wc_error_t err)
         C->have_k = 0;
     }
     if (F->dim == 3)
-        return chamber_point(L->pt + 3 * at, C, F, err);
-    _fmpz_vec_set(L->pt + 3 * at, F->point, 3);
+        return chamber_point(WC_ROW(L->pt, at), C, F, err);
+    _fmpz_vec_set(WC_ROW(L->pt, at), F->point, 3);
     return WC_OK;
 }
 
@@ -523,11 +524,13 @@ key_sort(key_ref * r, key_ref * tmp, slong n, const uint64_t * key,
     return r;
 }
 
-/* key[i] := key[src[i]] (kw words each) for i < n, src a permutation,
-   in place: cycle by cycle, with one key of scratch (tmp); src is left
+/* key[i] := key[src[i]] (kw words each) and row i of P := row src[i],
+   for i < n, src a permutation, in place: cycle by cycle, with one key
+   of scratch (tmp) and the rows swapped along the cycle; src is left
    the identity.  */
 static void
-permute_keys(uint64_t * key, slong * src, slong n, slong kw, uint64_t * tmp)
+permute_cells(uint64_t * key, fmpz_mat_t P, slong * src, slong n, slong kw,
+              uint64_t * tmp)
 {
     slong i, j, k;
 
@@ -540,6 +543,8 @@ permute_keys(uint64_t * key, slong * src, slong n, slong kw, uint64_t * tmp)
         {
             k = src[j];
             memcpy(key + j * kw, key + k * kw, sizeof(uint64_t) * kw);
+            /* row j gets row k's; row k then holds row i's */
+            _fmpz_vec_swap(WC_ROW(P, j), WC_ROW(P, k), 3);
             src[j] = j;
         }
         memcpy(key + j * kw, tmp, sizeof(uint64_t) * kw);
@@ -548,7 +553,8 @@ permute_keys(uint64_t * key, slong * src, slong n, slong kw, uint64_t * tmp)
 }
 
 /* A := the cells of L on the planes H (taken), sorted by dimension
-   (bucketed), then by key; A takes L's keys, put in that order.
+   (bucketed), then by key; A takes L's keys and points (already A's
+   point matrix), put in that order.
    Returns 0 when out of memory.  */
 static int
 cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
@@ -579,8 +585,6 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
     A->nplanes = L->m;
     fmpz_mat_swap(A->planes, H);
     A->count = total;
-    fmpz_mat_clear(A->point);
-    fmpz_mat_init(A->point, total, 3);
     for (d = 0, i = 0; d < 4; d++)
     {
         /* start[d] is now the end of dimension d's cells */
@@ -590,12 +594,11 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, cell_list * L)
         for (j = 0; j < n; j++, i++)
         {
             src[i] = r[j].i;
-            _fmpz_vec_swap(WC_ROW(A->point, i), L->pt + 3 * src[i], 3);
             dim[i] = d;
         }
     }
     /* the scratch key: L->cur, the walk is over */
-    permute_keys(L->key, src, total, kw, L->cur);
+    permute_cells(L->key, L->pt, src, total, kw, L->cur);
     A->dim = dim;
     A->kw = kw;
     A->key = L->key;
@@ -635,7 +638,9 @@ wc_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
     }
     nrays = 2 * _wc_arrangement_nlines(R);
     total = 1 + nrays + nsec + (2 - nrays + nsec);  /* Euler, checked */
-    if (!cell_list_init(&L, m, total) && status == WC_OK)
+    fmpz_mat_clear(A->point);
+    fmpz_mat_init(A->point, total, 3);
+    if (!cell_list_init(&L, m, total, A->point) && status == WC_OK)
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                               "out of memory (%ld cells)", (long) total);
     collect_init(&C, &L, H);
@@ -654,6 +659,8 @@ wc_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
     cell_list_clear(&L);
     _wc_arrangement_clear(R);
     fmpz_mat_clear(H);
+    if (status != WC_OK)
+        wc_cells_clear(A);
     return status;
 }
 
