@@ -185,8 +185,8 @@ typedef struct
     ulong * buf;            /* the current cone's cells */
     ulong * seen;           /* the cells of the cones after it, then
                                those of the kept cones before it */
-    slong * w;              /* the cells whose last cone is k: bits[e] */
-    ulong * bits;           /* of word w[e], off[k + 1] <= e < off[k] */
+    slong * word;           /* the cells whose last cone is k: bits[e] */
+    ulong * bits;           /* of word word[e], off[k + 1] <= e < off[k] */
     slong * off;            /* count + 1 */
 }
 members;
@@ -200,7 +200,9 @@ valid(const members * M, slong w)
     return n >= FLINT_BITS ? ~UWORD(0) : (UWORD(1) << n) - 1;
 }
 
-/* M->seen := the cells of every cone, and D_k for every cone k.  */
+/* M->seen := the cells of every cone, and for every cone k the cells it
+   is the last of: the entries word[e], bits[e] for off[k + 1] <= e <
+   off[k].  Bits past the last cell are not cells: masked off.  */
 static void
 members_last(members * M)
 {
@@ -214,11 +216,11 @@ members_last(members * M)
         M->cells(M->buf, k, M->ctx);
         for (w = 0; w < M->words; w++)
         {
-            ulong x = M->buf[w] & ~M->seen[w];
+            ulong x = M->buf[w] & ~M->seen[w] & valid(M, w);
 
             if (x != 0)
             {
-                M->w[e] = w;
+                M->word[e] = w;
                 M->bits[e++] = x;
                 M->seen[w] |= x;
                 left -= (M->seen[w] | ~valid(M, w)) == ~UWORD(0);
@@ -238,7 +240,7 @@ members_keep(members * M, slong k)
     slong e, w;
 
     for (e = M->off[k + 1]; e < M->off[k]; e++)
-        if ((M->bits[e] & ~M->seen[M->w[e]]) != 0)
+        if ((M->bits[e] & ~M->seen[M->word[e]]) != 0)
             break;
     if (e == M->off[k])
         return 0;
@@ -263,10 +265,10 @@ _wc_plan_exact(int * exact, ulong * any, slong count, slong ncells,
     M.ctx = ctx;
     M.buf = malloc(sizeof(ulong) * (M.words + 1));
     M.seen = calloc(M.words + 1, sizeof(ulong));
-    M.w = malloc(sizeof(slong) * n);
+    M.word = malloc(sizeof(slong) * n);
     M.bits = malloc(sizeof(ulong) * n);
     M.off = malloc(sizeof(slong) * (count + 1));
-    ok = M.buf != NULL && M.seen != NULL && M.w != NULL && M.bits != NULL
+    ok = M.buf != NULL && M.seen != NULL && M.word != NULL && M.bits != NULL
         && M.off != NULL;
     if (ok)
     {
@@ -278,7 +280,7 @@ _wc_plan_exact(int * exact, ulong * any, slong count, slong ncells,
     }
     free(M.buf);
     free(M.seen);
-    free(M.w);
+    free(M.word);
     free(M.bits);
     free(M.off);
     return ok;

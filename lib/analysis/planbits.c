@@ -11,9 +11,9 @@
    no cell outside the AND, over its facets and equalities, of the cells
    not on the wrong side (in neither, for an equality), and every cell
    strictly inside each facet when its relative interior belongs to it;
-   so a cone
-   costs a few passes over count / FLINT_BITS words, and the face lattice
-   (wc_cone_contains) is asked about the cells on its boundary only.  The
+   so a cone costs a few passes over count / FLINT_BITS words, and the
+   face lattice (wc_cone_contains) is asked about the cells on its
+   boundary only.  The
    answers are those of _wc_cone_key_contains, cell by cell.  */
 
 #include <config.h>

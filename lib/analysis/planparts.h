@@ -142,8 +142,9 @@ wc_plan_verdict _wc_plan_graph_verdict(const ulong * adj, slong n,
 /* Exact redundancy (plan.c): exact[k] := 1 when cone k of count is not
    dropped, in order, as inside the union of the cones still kept; any
    (ncells / FLINT_BITS + 1 words) := the cells of any cone.  cells(out,
-   k, ctx) writes the cells of cone k as a bitset (bit i for cell i); it
-   is called at most twice per cone.  Returns 0 when out of memory.  */
+   k, ctx) writes the cells of cone k as a bitset (bit i for cell i; bits
+   from ncells on are ignored); it is called at most twice per cone.
+   Returns 0 when out of memory.  */
 typedef void (* _wc_plan_bits_fn)(ulong * out, slong k, void * ctx);
 int _wc_plan_exact(int * exact, ulong * any, slong count, slong ncells,
                    _wc_plan_bits_fn cells, void * ctx);

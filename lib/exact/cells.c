@@ -638,6 +638,12 @@ wc_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
     }
     nrays = 2 * _wc_arrangement_nlines(R);
     total = 1 + nrays + nsec + (2 - nrays + nsec);  /* Euler, checked */
+    if (status == WC_OK && (uint64_t) total >= SLOT_INDEX)
+        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                              "%ld cells: more than this build can index",
+                              (long) total);
+    if (status != WC_OK)
+        total = 0;      /* nothing to walk */
     fmpz_mat_clear(A->point);
     fmpz_mat_init(A->point, total, 3);
     if (!cell_list_init(&L, m, total, A->point) && status == WC_OK)
@@ -736,9 +742,11 @@ wc_cells_find(const wc_cells_t A, slong dim, const signed char * sign)
     const slong * hit;
     cell_key key;
     uint64_t small[8];
-    uint64_t * k = A->kw <= 8 ? small
-        : malloc(sizeof(uint64_t) * (A->kw + 1));
+    uint64_t * k;
 
+    if (A->count == 0)
+        return -1;
+    k = A->kw <= 8 ? small : malloc(sizeof(uint64_t) * (A->kw + 1));
     if (k == NULL)
         return -1;      /* out of memory: not found */
     wc_cells_pack(k, sign, A->nplanes);

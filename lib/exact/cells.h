@@ -113,7 +113,8 @@ slong wc_cells_plane_index(const wc_cells_t A, const fmpz * h);
 slong wc_cells_locate(const wc_cells_t A, const fmpq * x);
 
 /* Index of the cell of dimension dim with sign vector sign (nplanes
-   entries), or -1 when there is none.  O(nplanes log count).  */
+   entries), or -1 when there is none (or, with more than 256 planes,
+   when out of memory).  O(nplanes log count).  */
 slong wc_cells_find(const wc_cells_t A, slong dim, const signed char * sign);
 
 /* The extreme rays of every cell's closure, as indices of the
