@@ -78,18 +78,6 @@ planes_add(planes * P)
 }
 
 static void
-cross3(fmpz * c, const fmpz * x, const fmpz * y)
-{
-    slong j;
-
-    for (j = 0; j < 3; j++)
-    {
-        fmpz_mul(c + j, x + (j + 1) % 3, y + (j + 2) % 3);
-        fmpz_submul(c + j, x + (j + 2) % 3, y + (j + 1) % 3);
-    }
-}
-
-static void
 rand_vec(fmpz * v, slong b)
 {
     slong j;
@@ -180,7 +168,7 @@ random_planes(planes * P)
         else if (kind == 1)
         {
             rand_vec(r, 2);
-            cross3(h, L, r);
+            _wc_zvec3_cross(h, L, r);
         }
         else if (kind == 2)     /* through a coordinate axis */
         {
@@ -189,9 +177,9 @@ random_planes(planes * P)
         }
         else if (kind == 3 && P->n >= 3)    /* through two others' line */
         {
-            cross3(r, h - 3, h - 6);
+            _wc_zvec3_cross(r, h - 3, h - 6);
             rand_vec(s, 2);
-            cross3(h, r, s);
+            _wc_zvec3_cross(h, r, s);
         }
         else if (kind == 4 && P->n >= 2)    /* a repeated direction */
             _fmpz_vec_scalar_mul_si(h, P->v + 3 * wctest_randint(0, i - 1),
