@@ -1,16 +1,18 @@
-/* cli-options.c -- reading a command's options, and moving its operands
-   after them.
+/* cli-options.c -- a command line read by the command's schema (rows
+   of lib/api/schema.c): options, operands, and moving operands after
+   options.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   Each command lists its own options once (cli_command.options); the
-   table given to getopt_long is derived from it: the command's options,
-   --help and --version, and -- for a CLI_SHARED command -- the options of
-   the other shared commands under codes of their own, so that they are
+   The table given to getopt_long is derived from the command's rows: its
+   options, everyone's (--help, --version, --progress, --decimals,
+   --print-request), and -- for a shared command -- the options of the
+   other shared commands under codes of their own, so that they are
    refused by name ("does not apply here") and an abbreviation is
-   ambiguous among all of them, not only among the command's.  */
+   ambiguous among all of them, not only among the command's.  Values are
+   read by _wc_arg_set_text, as a request's are.  */
 
 #include <config.h>
 
@@ -21,18 +23,22 @@
 
 /* Codes of the options of other commands: CLI_FOREIGN + their place in
    the table, all distinct, so that getopt_long finds an abbreviation
-   ambiguous between two of them.  */
+   ambiguous between two of them.  A command's own option's code is its
+   row's place.  */
 #define CLI_FOREIGN 0x4000
+#define CLI_ROW 0x1000
 
-/* --progress's and --decimals's codes.  */
+/* --progress's, --decimals's and --print-request's codes.  */
 #define CLI_PROGRESS 0x2000
 #define CLI_DECIMALS 0x2001
+#define CLI_PRINT_REQUEST 0x2002
 
 static const struct option everyones[] = {
     { "help", no_argument, NULL, 'h' },
     { "version", no_argument, NULL, 'V' },
     { "progress", no_argument, NULL, CLI_PROGRESS },
     { "decimals", required_argument, NULL, CLI_DECIMALS },
+    { "print-request", no_argument, NULL, CLI_PRINT_REQUEST },
     { NULL, 0, NULL, 0 }
 };
 
@@ -62,11 +68,10 @@ listed(const struct option * table, int n, const char * name)
     return 0;
 }
 
-/* Append opts to table[0..*n) unless already named there; foreign: under
-   codes of their own.  0 when the table is full.  */
+/* Append opts to table[0..*n) unless already named there.  0 when the
+   table is full.  */
 static int
-append(struct option * table, int * n, const struct option * opts,
-       int foreign)
+append(struct option * table, int * n, const struct option * opts)
 {
     for (; opts->name != NULL; opts++)
     {
@@ -74,9 +79,31 @@ append(struct option * table, int * n, const struct option * opts,
             continue;
         if (*n == CLI_MAX_OPTIONS)
             return 0;
-        table[*n] = *opts;
-        if (foreign)
-            table[*n].val = CLI_FOREIGN + *n;
+        table[(*n)++] = *opts;
+    }
+    return 1;
+}
+
+/* Append the option rows of S, under their places (foreign: under codes
+   of their own, past the table's end).  */
+static int
+append_rows(struct option * table, int * n, const _wc_command_schema * S,
+            int foreign)
+{
+    const _wc_arg * a;
+
+    for (a = S->options; a->name != NULL; a++)
+    {
+        if (listed(table, *n, a->name))
+            continue;
+        if (*n == CLI_MAX_OPTIONS)
+            return 0;
+        table[*n].name = a->name;
+        table[*n].has_arg = a->kind == _WC_ARG_FLAG ? no_argument
+            : required_argument;
+        table[*n].flag = NULL;
+        table[*n].val = foreign ? CLI_FOREIGN + *n
+            : CLI_ROW + (int) (a - S->options);
         ++*n;
     }
     return 1;
@@ -86,15 +113,18 @@ void
 cli_options_init(cli_options * p, const cli_command * cmd)
 {
     const cli_command * c;
+    unsigned shared = _WC_CMD_SHARED;
     int n = 0, ok;
 
     p->cmd = cmd;
     p->status = WC_OK;
-    ok = append(p->table, &n, cmd->options, 0)
-        && append(p->table, &n, everyones, 0);
-    for (c = cli_commands; ok && c->name != NULL; c++)
-        if ((cmd->flags & CLI_SHARED) && (c->flags & CLI_SHARED) && c != cmd)
-            ok = append(p->table, &n, c->options, 1);
+    p->print_request = 0;
+    ok = append_rows(p->table, &n, cmd->schema, 0)
+        && append(p->table, &n, everyones);
+    for (c = cli_commands; ok && c->schema != NULL; c++)
+        if ((cmd->schema->flags & shared) && (c->schema->flags & shared)
+            && c != cmd)
+            ok = append_rows(p->table, &n, c->schema, 1);
     if (!ok)
         p->status = WC_EINTERNAL;
     memset(p->table + n, 0, sizeof(struct option));
@@ -110,16 +140,19 @@ cli_option(cli_options * p, int argc, char ** argv)
     if (p->status != WC_OK)
     {
         fputs(PROG ": internal error: too many options\n", stderr);
+        p->status = WC_EINTERNAL;
         return CLI_EXIT;
     }
     while ((c = getopt_long(argc, argv, "hV", p->table, &idx))
-           == CLI_PROGRESS || c == CLI_DECIMALS)
+           == CLI_PROGRESS || c == CLI_DECIMALS || c == CLI_PRINT_REQUEST)
     {
         if (c == CLI_PROGRESS)
             cli_progress_force();
+        else if (c == CLI_PRINT_REQUEST)
+            p->print_request = 1;
         else if (!set_decimals(optarg))
         {
-            p->status = cli_usage_error(p->cmd->name, "--decimals wants a "
+            p->status = cli_usage_error(p->cmd->schema->name, "--decimals wants a "
                                         "whole number from 0 to 50, not "
                                         "'%s'", optarg);
             return CLI_EXIT;
@@ -128,36 +161,47 @@ cli_option(cli_options * p, int argc, char ** argv)
     if (c == -1)
         return CLI_DONE;
     if (c >= CLI_FOREIGN)
-        p->status = cli_usage_error(p->cmd->name,
+        p->status = cli_usage_error(p->cmd->schema->name,
                                     "option '--%s' does not apply here",
                                     p->table[idx].name);
     else if (c == 'h' || c == 'V')
     {
         if (c == 'h')
-            fputs(p->cmd->usage, stdout);
+            _wc_schema_fprint_help(stdout, p->cmd->schema);
         else
             cli_version();
         p->status = cli_finish_output();
     }
     else if (c == '?' || c == ':')
-        p->status = cli_usage_error(p->cmd->name,
+        p->status = cli_usage_error(p->cmd->schema->name,
                                     "unknown or incomplete option '%s'",
                                     argv[optind - 1]);
     else
-        return c;
+        return c - CLI_ROW;
     return CLI_EXIT;
 }
 
-/* The option of opts that arg names exactly ("--NAME"), or NULL.  */
-static const struct option *
-named(const struct option * opts, const char * arg)
+/* The option row of S that arg names exactly ("--NAME"), or NULL.  */
+static const _wc_arg *
+named(const _wc_command_schema * S, const char * arg)
 {
     if (arg[0] != '-' || arg[1] != '-')
         return NULL;
-    for (; opts->name != NULL; opts++)
-        if (strcmp(arg + 2, opts->name) == 0)
-            return opts;
-    return NULL;
+    return _wc_schema_option(S, arg + 2, 0);
+}
+
+/* Whether arg is one of everyone's options that takes a value.  */
+static int
+everyones_value(const char * arg)
+{
+    const struct option * o;
+
+    if (arg[0] != '-' || arg[1] != '-')
+        return 0;
+    for (o = everyones; o->name != NULL; o++)
+        if (strcmp(arg + 2, o->name) == 0)
+            return o->has_arg == required_argument;
+    return 0;
 }
 
 /* "--NAME=A,B,C" in a malloc'd string.  */
@@ -182,7 +226,7 @@ is_operand(const char * a)
 }
 
 char **
-cli_operands_last(int * pargc, char ** argv, const struct option * opts,
+cli_operands_last(int * pargc, char ** argv, const _wc_command_schema * S,
                   char ** extra)
 {
     int argc = *pargc, i, no = 0, nx = 0;
@@ -193,10 +237,9 @@ cli_operands_last(int * pargc, char ** argv, const struct option * opts,
     *extra = NULL;
     for (i = 1; opt != NULL && ops != NULL && i < argc; i++)
     {
-        const struct option * o = named(opts, argv[i]);
-
-        if (o == NULL)
-            o = named(everyones, argv[i]);
+        const _wc_arg * o = named(S, argv[i]);
+        int value = o != NULL ? o->kind != _WC_ARG_FLAG
+            : everyones_value(argv[i]);
 
         if (strcmp(argv[i], "--") == 0)
         {
@@ -210,9 +253,10 @@ cli_operands_last(int * pargc, char ** argv, const struct option * opts,
             continue;
         }
         opt[no++] = argv[i];
-        if (o == NULL || o->has_arg != required_argument)
+        if (!value)
             continue;
-        if ((o->val & CLI_WRENCH_VALUE) && i + 3 < argc && *extra == NULL)
+        if (o != NULL && o->kind == _WC_ARG_WRENCH && i + 3 < argc
+            && *extra == NULL)
         {
             if ((*extra = joined(o->name, argv + i + 1)) == NULL)
                 break;
@@ -236,4 +280,181 @@ cli_operands_last(int * pargc, char ** argv, const struct option * opts,
     free(opt);
     free(ops);
     return out;
+}
+
+/* ------------------------------------------------------------------ */
+/* A whole command line into a request                                 */
+
+/* The metavars of S's operands with flag set (or unset) joined as
+   "A, B and C" into buf.  */
+static void
+join_operands(char * buf, size_t size, const _wc_command_schema * S,
+              int optional)
+{
+    const _wc_arg * a;
+    int n = 0, k = 0;
+
+    buf[0] = '\0';
+    for (a = S->operands; a->name != NULL; a++)
+        n += !(a->flags & _WC_ARG_OPTIONAL) == !optional;
+    for (a = S->operands; a->name != NULL; a++)
+        if (!(a->flags & _WC_ARG_OPTIONAL) == !optional)
+            snprintf(buf + strlen(buf), size - strlen(buf), "%s%s",
+                     k++ == 0 ? "" : k == n ? " and " : ", ", a->metavar);
+}
+
+/* What S takes, for a usage error: "PROBLEM and MODE only", "PROBLEM and
+   optionally FX FY TAU".  */
+static int
+wrong_operands(const _wc_command_schema * S, int few, char ** v, int n)
+{
+    char need[128], may[128], msg[300];
+
+    join_operands(need, sizeof need, S, 0);
+    join_operands(may, sizeof may, S, 1);
+    if (S->operands->name == NULL)
+        snprintf(msg, sizeof msg, "%s takes no operands, not '%s'", S->name,
+                 n > 0 ? v[0] : "");
+    else if (few)
+        snprintf(msg, sizeof msg, "%s needs %s", S->name, need);
+    else if (may[0] == '\0')
+        snprintf(msg, sizeof msg, "%s takes %s only", S->name, need);
+    else if (need[0] == '\0')
+        snprintf(msg, sizeof msg, "%s takes %s at most", S->name, may);
+    else
+        snprintf(msg, sizeof msg, "%s takes %s and optionally %s", S->name,
+                 need, may);
+    return cli_usage_error(S->name, "%s", msg);
+}
+
+/* The operands v[0..n) into R.  -1, or the exit status of a usage
+   error.  */
+static int
+operands(_wc_request * R, const _wc_command_schema * S, char ** v, int n)
+{
+    const _wc_arg * a;
+    char msg[256];
+    const char * why;
+    int k = 0, need = 0;
+
+    for (a = S->operands; a->name != NULL; a++)
+        if (!(a->flags & _WC_ARG_OPTIONAL))
+            need += a->kind == _WC_ARG_WRENCH ? 3 : 1;
+    if (n < need)
+        return wrong_operands(S, 1, v, n);
+    for (a = S->operands; a->name != NULL && k < n; a++)
+    {
+        int w = a->kind == _WC_ARG_WRENCH ? 3 : 1;
+
+        if (k + w > n)
+            break;
+        if (w == 3)
+            _wc_arg_set_wrench(R, a, (const char * const *) v + k);
+        else if ((why = _wc_arg_set_text(R, a, v[k], msg, sizeof msg))
+                 != NULL)
+            return cli_usage_error(S->name, "%s", why);
+        k += w;
+    }
+    return k == n ? -1 : wrong_operands(S, 0, v, n);
+}
+
+/* Inputs named "-" read standard input.  */
+static void
+stdin_inputs(_wc_request * R, const _wc_command_schema * S)
+{
+    const _wc_arg * a;
+
+    for (a = S->operands; a->name != NULL; a++)
+    {
+        _wc_input * in = (_wc_input *) (void *) ((char *) R + a->offset);
+
+        if (a->kind == _WC_ARG_INPUT && in->path != NULL)
+            cli_input(in, in->path);
+    }
+}
+
+/* --print-request: R as a request line; standard input is read into the
+   request as KEY_text.  */
+static int
+print_request(_wc_request * R, const _wc_command_schema * S)
+{
+    const _wc_arg * a;
+    wc_error_t err;
+    int status = WC_OK;
+
+    if (!(S->flags & _WC_CMD_REQUEST))
+        return cli_usage_error(S->name, "'%s' is not a request command "
+                               "(yet): --print-request does not apply",
+                               S->name);
+    wc_error_init(err);
+    for (a = S->operands; status == WC_OK && a->name != NULL; a++)
+    {
+        _wc_input * in = (_wc_input *) (void *) ((char *) R + a->offset);
+        char * text = NULL;
+        size_t len = 0, i;
+
+        if (a->kind != _WC_ARG_INPUT || in->stream == NULL)
+            continue;
+        status = _wc_input_read(&text, &len, in, err);
+        for (i = 0; status == WC_OK && i < sizeof R->owned / sizeof R->owned[0]
+             && R->owned[i] != NULL; i++)
+            ;
+        if (status == WC_OK && i == sizeof R->owned / sizeof R->owned[0])
+            status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                  "out of memory");
+        if (status == WC_OK)
+        {
+            text[len] = '\0';
+            R->owned[i] = text;
+            in->text = text;
+            in->len = len;
+            in->stream = NULL;
+        }
+        else
+            free(text);
+    }
+    if (status != WC_OK)
+        cli_report(err, status);
+    else
+    {
+        _wc_request_fprint_json(stdout, R);
+        status = cli_finish_output();
+    }
+    wc_error_clear(err);
+    return status;
+}
+
+int
+cli_parse(_wc_request * R, const cli_command * self, int argc, char ** argv)
+{
+    const _wc_command_schema * S = self->schema;
+    const _wc_arg * culprit;
+    cli_options p;
+    char msg[256];
+    const char * why;
+    int c, status;
+
+    _wc_request_init(R, (_wc_command) (S - _wc_schema));
+    cli_options_init(&p, self);
+    while ((c = cli_option(&p, argc, argv)) >= 0)
+        if ((why = _wc_arg_set_text(R, S->options + c,
+                                    optarg != NULL ? optarg : "", msg,
+                                    sizeof msg)) != NULL)
+            return cli_usage_error(S->name, "%s", why);
+    if (c == CLI_EXIT)
+        return p.status;
+    if ((status = operands(R, S, argv + optind, argc - optind)) >= 0)
+        return status;
+    stdin_inputs(R, S);
+    if (S->check != NULL && (why = S->check(msg, sizeof msg, &culprit, R))
+        != NULL)
+        return cli_usage_error(S->name, "%s", why);
+    return p.print_request ? print_request(R, S) : -1;
+}
+
+int
+cli_done(_wc_request * R, int status)
+{
+    _wc_request_clear(R);
+    return status;
 }

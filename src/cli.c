@@ -57,30 +57,6 @@ cli_load_problem(wc_problem_t P, const char * path, wc_error_t err)
     return _wc_load_problem(P, &in, err);
 }
 
-int
-cli_parse_format(cli_format * f, const char * s, const char * cmd,
-                 int allow_cdd)
-{
-    if (strcmp(s, "text") == 0)
-        *f = FMT_TEXT;
-    else if (strcmp(s, "json") == 0)
-        *f = FMT_JSON;
-    else if (allow_cdd && strcmp(s, "cdd") == 0)
-        *f = FMT_CDD;
-    else if (allow_cdd && strcmp(s, "ine") == 0)
-        *f = FMT_INE;
-    else if (allow_cdd && strcmp(s, "ext") == 0)
-        *f = FMT_EXT;
-    else
-    {
-        cli_usage_error(cmd, allow_cdd ? "unknown format '%s' (text, json, "
-                        "cdd, ine or ext)" : "unknown format '%s' (text or "
-                        "json)", s);
-        return 0;
-    }
-    return 1;
-}
-
 /* Only a file this run created is ever removed -- never a device or
    someone's file.  */
 int

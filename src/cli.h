@@ -19,37 +19,23 @@
 #include "wrenchcone.h"
 #include "cli-base.h"
 #include "api/run.h"
+#include "api/args.h"
+#include "api/schema.h"
 
 #define PROG "wrenchcone"
 
 typedef struct cli_command cli_command;
 
-/* One command of the program.  */
+/* One command of the program: its row of the schema (lib/api/schema.c:
+   name, usage, operands, options) and the function that runs it.  */
 struct cli_command
 {
-    const char * name;          /* dispatched by this full name only */
+    const _wc_command_schema * schema;
     int (*run)(const cli_command * self, int argc, char ** argv);
-    const char * usage;         /* its --help text */
-    const struct option * options;  /* its own options, ending with a NULL
-                                       name; --help and --version are
-                                       everyone's and not listed */
-    unsigned flags;
 };
 
-/* The flags of a command.  CLI_SHARED: the command knows the options of
-   every other CLI_SHARED command, and refuses them as "does not apply
-   here" rather than as unknown (so an abbreviation is read against all
-   of them).  CLI_OPERANDS_LAST: operands may be negative numbers, read
-   as operands, not options (see cli_operands_last).  */
-enum { CLI_SHARED = 1, CLI_OPERANDS_LAST = 2 };
-
-/* An option code with this bit takes one value FX,FY,TAU that may also
-   be written as three arguments, --NAME FX FY TAU (CLI_OPERANDS_LAST
-   commands only).  */
-#define CLI_WRENCH_VALUE 0x1000
-
-/* The program's commands, ending with a NULL name (wrenchcone.c).  A
-   NULL run: the command is planned but not implemented.  */
+/* The program's commands, in the schema's order, ending with a NULL
+   schema (wrenchcone.c).  */
 extern const cli_command cli_commands[];
 
 /* Inputs larger than these are refused before they are parsed: a problem
@@ -72,10 +58,8 @@ int cli_usage_error(const char * cmd, const char * fmt, const char * arg);
 
 int cli_load_problem(wc_problem_t P, const char * path, wc_error_t err);
 
-/* --format's value: 1 when s names a format (cdd, ine and ext only with
-   allow_cdd), else 0 after a usage error for command cmd.  */
-int cli_parse_format(cli_format * f, const char * s, const char * cmd,
-                     int allow_cdd);
+/* The --format of R (text when not given).  */
+#define cli_format_of(R) ((cli_format) ((R)->format < 0 ? FMT_TEXT : (R)->format))
 
 /* Progress on stderr (cli-progress.c): cli_progress_force for
    --progress, cli_progress_start before a command runs (it installs the
@@ -168,6 +152,7 @@ typedef struct
     const cli_command * cmd;
     struct option table[CLI_MAX_OPTIONS + 1];
     int status;         /* the exit status, once CLI_EXIT is returned */
+    int print_request;  /* --print-request was given */
 }
 cli_options;
 
@@ -175,18 +160,29 @@ enum { CLI_DONE = -1, CLI_EXIT = -2 };
 
 void cli_options_init(cli_options * p, const cli_command * cmd);
 
-/* The next option's code from the command's table, its value in optarg;
-   CLI_DONE after the last one (the operands are argv[optind..]), or
-   CLI_EXIT when the command is over with status p->status: --help and
-   --version printed, or a usage error reported.  */
+/* The next option's row (its place in the command's schema options) with
+   its value in optarg; CLI_DONE after the last one (the operands are
+   argv[optind..]), or CLI_EXIT when the command is over with status
+   p->status: --help and --version printed, or a usage error reported.  */
 int cli_option(cli_options * p, int argc, char ** argv);
 
+/* The command line of self into R (freshly declared; the caller
+   _wc_request_clear's it whatever the result): every option and operand
+   read and checked by the schema's rows, "-" as standard input, the
+   command's rules between them.  Returns -1 to go on, or the exit status
+   when the command is over: --help, --version or --print-request
+   printed, or a usage error reported.  */
+int cli_parse(_wc_request * R, const cli_command * self, int argc,
+              char ** argv);
+
+/* _wc_request_clear(R), then status.  */
+int cli_done(_wc_request * R, int status);
+
 /* argv with the options first, then "--", then the operands, so that
-   "-1" is an operand; a CLI_WRENCH_VALUE option followed by three
-   arguments becomes one --NAME=FX,FY,TAU, malloc'd in *extra.  Returns a
-   malloc'd vector of argv's strings (and *extra), or NULL when out of
-   memory.  */
+   "-1" is an operand; a wrench option followed by three arguments becomes
+   one --NAME=FX,FY,TAU, malloc'd in *extra.  Returns a malloc'd vector of
+   argv's strings (and *extra), or NULL when out of memory.  */
 char ** cli_operands_last(int * pargc, char ** argv,
-                          const struct option * opts, char ** extra);
+                          const _wc_command_schema * S, char ** extra);
 
 #endif

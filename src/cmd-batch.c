@@ -15,32 +15,6 @@
 #include "cli.h"
 #include "commands.h"
 
-const char cmd_batch_usage[] =
-    "Usage: " PROG " batch [OPTIONS] [FILE]\n"
-    "Answer requests given as JSON Lines (FILE, or standard input when FILE is\n"
-    "absent or '-'), one JSON object a line, such as\n"
-    "  {\"command\": \"cone\", \"problem\": \"data/section4.wc\", \"mode\": \"na\"}\n"
-    "Each answer is one line, in the order of the requests: exactly what the\n"
-    "command prints with --format=json, or {\"error\": {\"message\", \"file\",\n"
-    "\"line\", \"column\", \"status\"}} and the batch goes on.  Blank lines are\n"
-    "skipped.  Each answer is written as soon as it is computed, so a program\n"
-    "can send one request and read its answer through pipes.  Commands: cone,\n"
-    "modes, feasible, classify, stability, plan, compare; the keys of each are\n"
-    "in wrenchcone(1), REQUESTS.\n"
-    "\n"
-    "Exit status: 0 when every request succeeded, else the largest status of\n"
-    "a line (1 bad input, 2 bad request, 3 internal, 4 a comparison beyond\n"
-    "its tolerance); 1 when FILE cannot be opened, 3 when reading it or\n"
-    "writing the answers fails.\n"
-    "\n"
-    "Options:\n"
-    "  -h, --help       print this help and exit\n"
-    "  -V, --version    print versions and exit\n";
-
-const struct option cmd_batch_options[] = {
-    { NULL, 0, NULL, 0 }
-};
-
 /* Answer every line of f (named name); the exit status.  */
 static int
 answer_lines(FILE * f, const char * name)
@@ -96,30 +70,24 @@ answer_lines(FILE * f, const char * name)
 int
 cmd_batch(const cli_command * self, int argc, char ** argv)
 {
-    cli_options p;
-    const char * path = "-";
+    const char * path;
+    _wc_request R;
     FILE * f;
-    int c, status, wst;
+    int status, wst;
 
-    cli_options_init(&p, self);
-    while ((c = cli_option(&p, argc, argv)) >= 0)
-        ;
-    if (c == CLI_EXIT)
-        return p.status;
-    if (argc - optind > 1)
-        return cli_usage_error("batch", "batch takes one FILE at most%s", "");
-    if (argc - optind == 1)
-        path = argv[optind];
+    if ((status = cli_parse(&R, self, argc, argv)) >= 0)
+        return cli_done(&R, status);
+    path = R.batch;
     f = strcmp(path, "-") == 0 ? stdin : fopen(path, "r");
     if (f == NULL)
     {
         fprintf(stderr, PROG ": %s: cannot open: %s\n", path,
                 strerror(errno));
-        return WC_EINPUT;
+        return cli_done(&R, WC_EINPUT);
     }
     status = answer_lines(f, cli_input_name(path));
     if (f != stdin)
         fclose(f);
     wst = cli_finish_output();
-    return wst != WC_OK ? wst : status;
+    return cli_done(&R, wst != WC_OK ? wst : status);
 }

@@ -14,52 +14,9 @@
 #include "commands.h"
 #include "draw/figure.h"
 
-const char cmd_draw_usage[] =
-    "Usage: " PROG " draw FIGURE [OPTIONS] PROBLEM\n"
-    "Draw a figure of PROBLEM as an SVG document: the part, its centre of mass,\n"
-    "the fixels with their normals and friction cones, and one of\n"
-    "\n"
-    "Figures (exactly one):\n"
-    "  --mode=M         the wrench cone W(M): each generator as a line of force,\n"
-    "                   pure torques as arcs about the centre of mass; dashed:\n"
-    "                   a generator of the closure that W(M) excludes\n"
-    "  --modes          a rotation centre (or a translation) per feasible mode\n"
-    "  --stability      where a frictionless finger may push: the strongly\n"
-    "                   stable sets (both semantics) and the weakly stable set\n"
-    "  --plan           where to push to seat the part: the insertion plan's\n"
-    "                   goal set G_goal\n"
-    "  --sweep=LIST     G_goal for each friction value of the comma-separated\n"
-    "                   LIST (at most 12), one above the other\n"
-    "  --graph          the insertion plan's state-transition graph (at most\n"
-    "                   4 fixels): the transitions it forbids and allows\n"
-    "  --graph --wrench=FX,FY,TAU\n"
-    "                   the transitions the wrench admits under the complete\n"
-    "                   plan (plan --complete), with its verdict\n"
-    "\n"
-    "Options:\n"
-    "  -o, --output=FILE  write the figure to FILE (whole or not at all: a\n"
-    "                   temporary file beside it is renamed at the end);\n"
-    "                   default (and -o -) standard output\n"
-    "  -h, --help       print this help and exit\n"
-    "  -V, --version    print versions and exit\n"
-    "\n"
-    "Every position comes from the exact result, converted to floating point\n"
-    "once; the legend and the caption say what is drawn.\n";
-
-enum { OPT_MODE = 256, OPT_MODES, OPT_STABILITY, OPT_PLAN, OPT_SWEEP,
-       OPT_GRAPH, OPT_OUTPUT, OPT_WRENCH };
-
-const struct option cmd_draw_options[] = {
-    { "mode", required_argument, NULL, OPT_MODE },
-    { "modes", no_argument, NULL, OPT_MODES },
-    { "stability", no_argument, NULL, OPT_STABILITY },
-    { "plan", no_argument, NULL, OPT_PLAN },
-    { "sweep", required_argument, NULL, OPT_SWEEP },
-    { "graph", no_argument, NULL, OPT_GRAPH },
-    { "output", required_argument, NULL, OPT_OUTPUT },
-    { "wrench", required_argument, NULL, OPT_WRENCH },
-    { NULL, 0, NULL, 0 }
-};
+/* The figures.  */
+enum { OPT_MODE = 1, OPT_MODES, OPT_STABILITY, OPT_PLAN, OPT_SWEEP,
+       OPT_GRAPH };
 
 /* The longest --sweep list: each value is a plan and a layer.  */
 #define DRAW_MAX_SWEEP 12
@@ -137,7 +94,7 @@ parse_wrench(fmpq * g, const char * s, wc_error_t err)
 }
 
 static int
-build(_wc_scene_t S, const draw_options * o, const char * path,
+build(_wc_scene_t S, const draw_options * o, const _wc_input * in,
       wc_error_t err)
 {
     fmpq mu[DRAW_MAX_SWEEP];
@@ -148,7 +105,7 @@ build(_wc_scene_t S, const draw_options * o, const char * path,
     for (i = 0; i < DRAW_MAX_SWEEP; i++)
         fmpq_init(mu + i);
     wc_problem_init(P);
-    status = cli_load_problem(P, path, err);
+    status = _wc_load_problem(P, in, err);
     if (status == WC_OK && o->kind == OPT_SWEEP)
         status = parse_sweep(mu, &k, o->value, err);
     if (status == WC_OK && o->wrench != NULL)
@@ -186,43 +143,18 @@ put_svg(FILE * f, const void * S)
     return _wc_svg_fprint(f, S, 1);
 }
 
-/* -1 to go on, or the exit status.  */
-static int
-parse(draw_options * o, const cli_command * self, int argc, char ** argv)
+/* The figure that R asks for (cli_parse has checked that it asks for
+   one).  */
+static void
+from_request(draw_options * o, const _wc_request * R)
 {
-    cli_options p;
-    int c;
-
-    cli_options_init(&p, self);
-    while ((c = cli_option(&p, argc, argv)) >= 0)
-        if (c == OPT_OUTPUT)
-            o->output = optarg;
-        else if (c == OPT_WRENCH)
-            o->wrench = optarg;
-        else
-        {
-            o->kind = c;
-            o->kinds++;
-            if (c == OPT_MODE || c == OPT_SWEEP)
-                o->value = optarg;
-        }
-    if (c == CLI_EXIT)
-        return p.status;
-    if (o->kinds == 0)
-        return cli_usage_error("draw", "draw needs a figure: --mode=M, "
-                               "--modes, --stability, --plan, --sweep=LIST "
-                               "or --graph%s", "");
-    if (o->kinds > 1)
-        return cli_usage_error("draw", "draw takes one figure at a time%s",
-                               "");
-    if (o->wrench != NULL && o->kind != OPT_GRAPH)
-        return cli_usage_error("draw", "--wrench goes with --graph only%s",
-                               "");
-    if (argc - optind != 1)
-        return cli_usage_error("draw", argc - optind < 1
-                               ? "draw needs PROBLEM%s"
-                               : "draw takes PROBLEM only%s", "");
-    return -1;
+    o->kind = R->mode != NULL ? OPT_MODE : R->fig_modes ? OPT_MODES
+        : R->fig_stability ? OPT_STABILITY : R->fig_plan ? OPT_PLAN
+        : R->sweep != NULL ? OPT_SWEEP : OPT_GRAPH;
+    o->kinds = 1;
+    o->value = R->mode != NULL ? R->mode : R->sweep;
+    o->output = R->output;
+    o->wrench = R->graph_wrench;
 }
 
 static int
@@ -230,14 +162,16 @@ run(const cli_command * self, int argc, char ** argv)
 {
     draw_options o = { 0, 0, NULL, NULL, NULL };
     _wc_scene_t S;
+    _wc_request R;
     wc_error_t err;
     int status;
 
-    if ((status = parse(&o, self, argc, argv)) >= 0)
-        return status;
+    if ((status = cli_parse(&R, self, argc, argv)) >= 0)
+        return cli_done(&R, status);
+    from_request(&o, &R);
     wc_error_init(err);
     _wc_scene_init(S);
-    status = build(S, &o, argv[optind], err);
+    status = build(S, &o, &R.problem, err);
     if (status != WC_OK)
         cli_report(err, status);
     else if (o.output != NULL && strcmp(o.output, "-") != 0)
@@ -249,7 +183,7 @@ run(const cli_command * self, int argc, char ** argv)
     }
     _wc_scene_clear(S);
     wc_error_clear(err);
-    return status;
+    return cli_done(&R, status);
 }
 
 int

@@ -10,63 +10,25 @@
 #include "cli.h"
 #include "commands.h"
 
-const char cmd_feasible_usage[] =
-    "Usage: " PROG " feasible [OPTIONS] PROBLEM MODE\n"
-    "Decide whether MODE (paper Table 1 letters) is kinematically feasible and\n"
-    "print a certificate: a primitive integer witness twist, or Motzkin\n"
-    "multipliers whose combination of the mode's constraint rows is zero,\n"
-    "proving that no twist has the mode.  Exit status 0 either way.\n"
-    "\n"
-    "Options:\n"
-    "  --certificate=FILE  also write the self-contained JSON certificate to\n"
-    "                      FILE, for '" PROG " verify FILE'\n"
-    "  --format=FMT        text (default) or json (the certificate itself)\n"
-    "  -h, --help          print this help and exit\n"
-    "  -V, --version       print versions and exit\n";
-
-enum { OPT_FORMAT = 256, OPT_CERT };
-
-const struct option cmd_feasible_options[] = {
-    { "format", required_argument, NULL, OPT_FORMAT },
-    { "certificate", required_argument, NULL, OPT_CERT },
-    { NULL, 0, NULL, 0 }
-};
-
 int
 cmd_feasible(const cli_command * self, int argc, char ** argv)
 {
-    cli_options p;
-    cli_format fmt = FMT_TEXT;
-    const char * certificate = NULL;
-    int c, status;
+    int status;
     _wc_request R;
     _wc_answer A;
     wc_error_t err;
 
-    cli_options_init(&p, self);
-    while ((c = cli_option(&p, argc, argv)) >= 0)
-        if (c == OPT_CERT)
-            certificate = optarg;
-        else if (!cli_parse_format(&fmt, optarg, "feasible", 0))
-            return WC_EUSAGE;
-    if (c == CLI_EXIT)
-        return p.status;
-    if (argc - optind != 2)
-        return cli_usage_error("feasible", argc - optind < 2
-                               ? "feasible needs PROBLEM and MODE%s"
-                               : "feasible takes PROBLEM and MODE only%s", "");
-    _wc_request_init(&R, _WC_FEASIBLE);
-    cli_input(&R.problem, argv[optind]);
-    R.mode = argv[optind + 1];
+    if ((status = cli_parse(&R, self, argc, argv)) >= 0)
+        return cli_done(&R, status);
     _wc_answer_init(&A);
     wc_error_init(err);
     status = _wc_run(&A, &R, err);
-    status = cli_certify(status, certificate, CLI_CERT_FEASIBLE, A.P, A.C,
+    status = cli_certify(status, R.certificate, CLI_CERT_FEASIBLE, A.P, A.C,
                          err);
     if (status == WC_OK)
     {
         /* JSON: the certificate itself, as batch prints it.  */
-        if (fmt == FMT_JSON)
+        if (cli_format_of(&R) == FMT_JSON)
             _wc_answer_fprint_json(stdout, &A);
         else
             wc_certificate_fprint(stdout, A.C, A.P, 0);
@@ -74,5 +36,5 @@ cmd_feasible(const cli_command * self, int argc, char ** argv)
     }
     wc_error_clear(err);
     _wc_answer_clear(&A);
-    return status;
+    return cli_done(&R, status);
 }

@@ -21,28 +21,6 @@
 #include "commands.h"
 #include "draw/figure.h"
 
-const char cmd_report_usage[] =
-    "Usage: " PROG " report [OPTIONS] PROBLEM\n"
-    "Write one self-contained HTML page (inline SVG and CSS, no scripts, works\n"
-    "offline, prints well) with every analysis of PROBLEM: the problem, the\n"
-    "feasible modes, the stability sets in both semantics, the insertion plan\n"
-    "with its goal set and eq. 25, their figures, the pushing regions with\n"
-    "their exact ends (and decimal approximations, marked so), and the command\n"
-    "lines that reproduce each part.\n"
-    "\n"
-    "Options:\n"
-    "  -o, --output=FILE  write the page to FILE (whole or not at all);\n"
-    "                   default (and -o -) standard output\n"
-    "  -h, --help       print this help and exit\n"
-    "  -V, --version    print versions and exit\n";
-
-enum { OPT_OUTPUT = 256 };
-
-const struct option cmd_report_options[] = {
-    { "output", required_argument, NULL, OPT_OUTPUT },
-    { NULL, 0, NULL, 0 }
-};
-
 static const char style[] =
     "body { font-family: sans-serif; max-width: 52em; margin: 1em auto; "
     "padding: 0 1em; color: #000; background: #fff; line-height: 1.4; }\n"
@@ -410,32 +388,27 @@ put_bytes(FILE * f, const void * b)
 static int
 run(const cli_command * self, int argc, char ** argv)
 {
-    const char * output = NULL;
+    const char * output, * path;
     char * buf = NULL;
     size_t len = 0;
-    cli_options p;
+    _wc_request R;
     wc_problem_t P;
     wc_error_t err;
     FILE * m;
-    int c, status;
+    int status;
 
-    cli_options_init(&p, self);
-    while ((c = cli_option(&p, argc, argv)) >= 0)
-        output = optarg;
-    if (c == CLI_EXIT)
-        return p.status;
-    if (argc - optind != 1)
-        return cli_usage_error("report", argc - optind < 1
-                               ? "report needs PROBLEM%s"
-                               : "report takes PROBLEM only%s", "");
+    if ((status = cli_parse(&R, self, argc, argv)) >= 0)
+        return cli_done(&R, status);
+    output = R.output;
+    path = R.problem.stream != NULL ? "-" : R.problem.path;
     wc_problem_init(P);
     wc_error_init(err);
-    status = cli_load_problem(P, argv[optind], err);
+    status = _wc_load_problem(P, &R.problem, err);
     if (status == WC_OK && (m = open_memstream(&buf, &len)) == NULL)
         status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
     else if (status == WC_OK)
     {
-        status = page(m, P, argv[optind], err);
+        status = page(m, P, path, err);
         if (fclose(m) != 0 && status == WC_OK)
             status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                   "out of memory");
@@ -456,7 +429,7 @@ run(const cli_command * self, int argc, char ** argv)
     free(buf);
     wc_error_clear(err);
     wc_problem_clear(P);
-    return status;
+    return cli_done(&R, status);
 }
 
 int

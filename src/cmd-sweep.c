@@ -13,52 +13,11 @@
 #include "cli.h"
 #include "commands.h"
 
-const char cmd_sweep_usage[] =
-    "Usage: " PROG " sweep [OPTIONS] PROBLEM\n"
-    "G_goal of the insertion plan against the friction coefficient, with\n"
-    "mu_s = mu_k = mu at every fixel.  G_goal shrinks as mu grows.\n"
-    "\n"
-    "Options (at least one of --friction and --critical):\n"
-    "  --friction=LIST  the plan for each value of the comma-separated list of\n"
-    "                   exact numbers: the pieces of G_goal, the needed strings,\n"
-    "                   eq. 25, and with a shape the pushing region and its\n"
-    "                   length (approximate, for reading)\n"
-    "  --critical       an exact bracket [lo, hi] of the friction at which G_goal\n"
-    "                   becomes empty: nonempty at lo (with a wrench in it),\n"
-    "                   empty at hi (with the strings whose cones cover R^3)\n"
-    "  --width=W        the bracket's largest width, at least 2^-96\n"
-    "                   (default 1/1000)\n"
-    "  --max-friction=M give up above M, at most 2^32 (default 1024):\n"
-    "                   G_goal is then nonempty at every mu <= M\n"
-    "  --certificate=FILE  with --critical, also write a certificate (JSON)\n"
-    "                   of the bracket, for wrenchcone verify\n"
-    "  --format=FMT     text (default) or json\n"
-    "  -h, --help       print this help and exit\n"
-    "  -V, --version    print versions and exit\n";
+/* The options: the command's request (R->friction, critical, width,
+   max_friction, certificate, format).  */
+typedef _wc_request sweep_options;
 
-enum { OPT_FORMAT = 256, OPT_FRICTION, OPT_CRITICAL, OPT_WIDTH,
-       OPT_MAXFRICTION, OPT_CERT };
-
-const struct option cmd_sweep_options[] = {
-    { "format", required_argument, NULL, OPT_FORMAT },
-    { "friction", required_argument, NULL, OPT_FRICTION },
-    { "critical", no_argument, NULL, OPT_CRITICAL },
-    { "width", required_argument, NULL, OPT_WIDTH },
-    { "max-friction", required_argument, NULL, OPT_MAXFRICTION },
-    { "certificate", required_argument, NULL, OPT_CERT },
-    { NULL, 0, NULL, 0 }
-};
-
-typedef struct
-{
-    int json;
-    const char * friction;      /* --friction=LIST */
-    int critical;               /* --critical */
-    const char * width;         /* --width=W */
-    const char * max_friction;  /* --max-friction=M */
-    const char * certificate;   /* --certificate=FILE */
-}
-sweep_options;
+#define JSON(o) (cli_format_of(o) == FMT_JSON)
 
 /* The critical bracket, with its two certificates: the plan at lo holds
    the witness in G_goal, the plan at hi names the strings whose cones
@@ -81,43 +40,6 @@ typedef struct
     crit_job crit;
 }
 answer;
-
-/* -1 to go on, or the exit status.  */
-static int
-parse(sweep_options * o, const cli_command * self, int argc, char ** argv)
-{
-    cli_options p;
-    cli_format fmt = FMT_TEXT;
-    int c;
-
-    memset(o, 0, sizeof(*o));
-    cli_options_init(&p, self);
-    while ((c = cli_option(&p, argc, argv)) >= 0)
-        switch (c)
-        {
-        case OPT_FORMAT:
-            if (!cli_parse_format(&fmt, optarg, "sweep", 0))
-                return WC_EUSAGE;
-            break;
-        case OPT_FRICTION:
-            o->friction = optarg;
-            break;
-        case OPT_CRITICAL:
-            o->critical = 1;
-            break;
-        case OPT_WIDTH:
-            o->width = optarg;
-            break;
-        case OPT_MAXFRICTION:
-            o->max_friction = optarg;
-            break;
-        case OPT_CERT:
-            o->certificate = optarg;
-            break;
-        }
-    o->json = fmt == FMT_JSON;
-    return c == CLI_EXIT ? p.status : -1;
-}
 
 /* The longest --friction list.  */
 #define CLI_MAX_FRICTIONS 1000
@@ -386,26 +308,26 @@ print_answer(const answer * a, const wc_problem_t P, const sweep_options * o)
 {
     slong i;
 
-    if (o->json)
+    if (JSON(o))
         fputs(WC_JSON_OPEN "\"sweep\": [", stdout);
     for (i = 0; i < a->n; i++)
     {
-        if (o->json && i)
+        if (JSON(o) && i)
             fputs(", ", stdout);
-        wc_plan_sweep_fprint(stdout, a->plans + i, P, a->mu + i, o->json);
+        wc_plan_sweep_fprint(stdout, a->plans + i, P, a->mu + i, JSON(o));
     }
-    if (o->json)
+    if (JSON(o))
         fputs(o->critical ? "], " : "]", stdout);
     if (o->critical)
     {
-        if (!o->json && a->n > 0)
+        if (!JSON(o) && a->n > 0)
             putchar('\n');
-        if (o->json)
+        if (JSON(o))
             print_critical_json(a->crit.C, a->crit.H, a->width);
         else
             print_critical_text(a->crit.C, a->crit.H, a->width, a->max);
     }
-    if (o->json)
+    if (JSON(o))
         fputs("}\n", stdout);
 }
 
@@ -418,22 +340,12 @@ cmd_sweep(const cli_command * self, int argc, char ** argv)
     wc_error_t err;
     answer a;
 
-    if ((status = parse(&o, self, argc, argv)) >= 0)
-        return status;
-    if (argc - optind != 1)
-        return cli_usage_error("sweep", argc - optind < 1
-                               ? "sweep needs PROBLEM%s"
-                               : "sweep takes PROBLEM only%s", "");
-    if (o.friction == NULL && !o.critical)
-        return cli_usage_error("sweep", "sweep needs --friction=LIST or "
-                               "--critical%s", "");
-    if (o.certificate != NULL && !o.critical)
-        return cli_usage_error("sweep", "--certificate certifies the "
-                               "bracket of --critical%s", "");
+    if ((status = cli_parse(&o, self, argc, argv)) >= 0)
+        return cli_done(&o, status);
     wc_problem_init(P);
     wc_error_init(err);
     answer_init(&a);
-    status = cli_load_problem(P, argv[optind], err);
+    status = _wc_load_problem(P, &o.problem, err);
     if (status == WC_OK && o.certificate != NULL)
         status = wc_problem_check_fixels(P, WC_PLAN_CERT_MAX_FIXELS, 0,
                                          "a plan certificate", err);
@@ -449,5 +361,5 @@ cmd_sweep(const cli_command * self, int argc, char ** argv)
     answer_clear(&a);
     wc_error_clear(err);
     wc_problem_clear(P);
-    return status;
+    return cli_done(&o, status);
 }

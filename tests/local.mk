@@ -79,7 +79,8 @@ SH_TESTS = \
 	tests/completion.sh \
 	tests/cli-batch.sh \
 	tests/cli-text.sh \
-	tests/python.sh
+	tests/python.sh \
+	tests/schema.sh
 TESTS += $(C_TESTS) $(SH_TESTS)
 TEST_EXTENSIONS = .sh
 SH_LOG_COMPILER = $(SHELL)

@@ -2,10 +2,15 @@
 # the command line, or as a JSON request) to its answer's JSON.
 
 lib_libwc_la_SOURCES += \
+	lib/api/schema.c \
+	lib/api/schemaprint.c \
+	lib/api/args.c \
 	lib/api/run.c \
 	lib/api/request.c
 wcapidir = $(pkgincludedir)/api
 wcapi_HEADERS = \
 	lib/api/request.h
 noinst_HEADERS += \
+	lib/api/schema.h \
+	lib/api/args.h \
 	lib/api/run.h

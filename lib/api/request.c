@@ -13,37 +13,9 @@
 #include <string.h>
 
 #include "api/request.h"
+#include "api/args.h"
 #include "api/run.h"
 #include "core/json.h"
-
-/* Which commands take a key.  */
-#define ALL ((1u << _WC_NCOMMANDS) - 1)
-#define CMD(c) (1u << (c))
-
-static const struct
-{
-    const char * key;
-    unsigned commands;
-}
-keys[] = {
-    { "command", ALL },
-    { "problem", ALL },
-    { "problem_text", ALL },
-    { "mode", CMD(_WC_CONE) | CMD(_WC_FEASIBLE) | CMD(_WC_COMPARE) },
-    { "method", CMD(_WC_CONE) },
-    { "trace", CMD(_WC_CONE) },
-    { "arith", CMD(_WC_CONE) },
-    { "witness", CMD(_WC_MODES) },
-    { "wrench", CMD(_WC_CLASSIFY) | CMD(_WC_PLAN) },
-    { "max_modes", CMD(_WC_CLASSIFY) },
-    { "bias", CMD(_WC_STABILITY) },
-    { "length", CMD(_WC_STABILITY) },
-    { "complete", CMD(_WC_PLAN) },
-    { "foreign", CMD(_WC_COMPARE) },
-    { "foreign_text", CMD(_WC_COMPARE) },
-    { "tol", CMD(_WC_COMPARE) },
-    { NULL, 0 }
-};
 
 /* Where the request's errors are located.  */
 typedef struct
@@ -124,23 +96,22 @@ number_text(const char ** s, const wc_json_node * v, const char * key,
                "JSON numbers", key);
 }
 
-/* A wrench [FX, FY, TAU] into s[0..3); *n := 3, or 0 when absent.  */
+/* A wrench [FX, FY, TAU] into *t (t->given when present).  */
 static int
-get_wrench(const char ** s, int * n, const wc_json_node * o,
-           const char * key, const where * w)
+get_wrench(_wc_triple * t, const wc_json_node * o, const char * key,
+           const where * w)
 {
     const wc_json_node * v = _wc_json_object_get(o, key);
     size_t i;
     int status = WC_OK;
 
-    *n = 0;
     if (v == NULL)
         return WC_OK;
     if (v->type != WC_JSON_ARRAY || v->len != 3)
         return bad(w, v, "\"%s\" takes three numbers [FX, FY, TAU]", key);
     for (i = 0; i < 3 && status == WC_OK; i++)
-        status = number_text(s + i, _wc_json_array_get(v, i), key, w);
-    *n = 3;
+        status = number_text(t->v + i, _wc_json_array_get(v, i), key, w);
+    t->given = 1;
     return status;
 }
 
@@ -173,152 +144,116 @@ get_input(_wc_input * in, const wc_json_node * o, const char * key,
     return get_string(&in->text, &in->len, o, key_text, w);
 }
 
-/* Every key of o is one of command c's.  */
+#define FIELD(R, a, T) ((T *) (void *) ((char *) (R) + (a)->offset))
+
+/* Whether key names row a of a request: KEY, or KEY_text for an input.  */
 static int
-check_keys(const wc_json_node * o, _wc_command c, const where * w)
+names_row(const char * key, const _wc_arg * a)
+{
+    char k[64];
+    size_t n;
+
+    if (a->flags & _WC_ARG_CLI)
+        return 0;
+    _wc_arg_key(k, sizeof k, a);
+    n = strlen(k);
+    return strcmp(key, k) == 0 || (a->kind == _WC_ARG_INPUT
+                                   && strncmp(key, k, n) == 0
+                                   && strcmp(key + n, "_text") == 0);
+}
+
+/* Every key of o is one of S's.  */
+static int
+check_keys(const wc_json_node * o, const _wc_command_schema * S,
+           const where * w)
 {
     size_t i;
-    int k;
 
     for (i = 0; i < o->len; i++)
     {
         const wc_json_node * key = _wc_json_object_key(o, i);
+        const _wc_arg * a = NULL;
+        int found = strcmp(key->text, "command") == 0;
 
-        for (k = 0; keys[k].key != NULL; k++)
-            if (strcmp(key->text, keys[k].key) == 0)
-                break;
-        if (keys[k].key == NULL || !(keys[k].commands & CMD(c)))
+        for (a = S->operands; !found && a->name != NULL; a++)
+            found = names_row(key->text, a);
+        for (a = S->options; !found && a->name != NULL; a++)
+            found = names_row(key->text, a);
+        if (!found)
         {
             wc_error_set(w->err, WC_EUSAGE, w->file, w->line + key->line - 1,
                          key->col, "\"%s\" is not a key of a %s request",
-                         key->text, _wc_command_name(c));
+                         key->text, S->name);
             return WC_EUSAGE;
         }
     }
     return WC_OK;
 }
 
-/* cone's options: as cmd-cone.c reads --method, --arith, --trace.  */
+/* Row a of the request o into R; operand: a required key unless the row
+   says it is optional.  */
 static int
-read_cone(_wc_request * R, const wc_json_node * o, const where * w)
-{
-    const char * method = NULL, * arith = NULL;
-    int status = get_string(&method, NULL, o, "method", w);
-
-    if (status == WC_OK)
-        status = get_string(&arith, NULL, o, "arith", w);
-    if (status == WC_OK)
-        status = get_bool(&R->trace, o, "trace", w);
-    if (status != WC_OK)
-        return status;
-    if (method != NULL && strcmp(method, "paper") == 0)
-        R->method = WC_METHOD_PAPER;
-    else if (method != NULL && strcmp(method, "direct") != 0)
-        return bad(w, _wc_json_object_get(o, "method"),
-                   "unknown method '%s' (direct or paper)", method);
-    if (arith != NULL && strcmp(arith, "double") == 0)
-        R->arith_double = 1;
-    else if (arith != NULL && strcmp(arith, "exact") != 0)
-        return bad(w, _wc_json_object_get(o, "arith"),
-                   "unknown arithmetic '%s' (exact or double)", arith);
-    if (R->arith_double && R->method != WC_METHOD_PAPER)
-        return bad(w, _wc_json_object_get(o, "arith"),
-                   "\"arith\": \"double\" needs \"method\": \"paper\"");
-    if (R->arith_double && R->trace)
-        return bad(w, _wc_json_object_get(o, "trace"),
-                   "\"arith\": \"double\" does not take \"trace\"");
-    return WC_OK;
-}
-
-static int
-read_max_modes(_wc_request * R, const wc_json_node * o, const where * w)
-{
-    const wc_json_node * v = _wc_json_object_get(o, "max_modes");
-
-    if (v == NULL)
-        return WC_OK;
-    if (v->type == WC_JSON_NUMBER && v->text[0] != '-'
-        && strspn(v->text, "0123456789") == v->len && v->len <= 9)
-    {
-        R->max_modes = strtol(v->text, NULL, 10);
-        return WC_OK;
-    }
-    return bad(w, v, "\"max_modes\" takes a count >= 0 (0: no limit)");
-}
-
-static int
-read_tol(_wc_request * R, const wc_json_node * o, const where * w)
-{
-    const wc_json_node * v = _wc_json_object_get(o, "tol");
-    const char * s = NULL;
-    char * end;
-
-    if (v == NULL)
-        return WC_OK;
-    if (number_text(&s, v, "tol", w) != WC_OK)
-        return WC_EUSAGE;
-    /* The command line's --tol: strtod, a report's tolerance only (every
-       decision of the comparison is exact).  */
-    R->tol = strtod(s, &end);
-    if (end == s || *end != '\0' || !(R->tol >= 0 && R->tol < 1.5707963))
-        return bad(w, v, "\"tol\" must be an angle in radians, at least 0 "
-                   "and below pi/2 (such as 1e-9), not '%s'", s);
-    return WC_OK;
-}
-
-/* The command's own keys.  */
-static int
-read_options(_wc_request * R, const wc_json_node * o, const where * w)
+read_arg(_wc_request * R, const _wc_arg * a, int operand,
+         const wc_json_node * o, const where * w)
 {
     const wc_json_node * v;
-    int n, status = WC_OK;
+    const char * s = NULL, * why;
+    char key[64], text_key[80], text_name[96], msg[256];
+    int status = WC_OK;
 
-    if (R->command == _WC_CONE || R->command == _WC_FEASIBLE
-        || R->command == _WC_COMPARE)
+    _wc_arg_key(key, sizeof key, a);
+    if (a->kind == _WC_ARG_INPUT)
     {
-        status = get_string(&R->mode, NULL, o, "mode", w);
-        if (status == WC_OK && R->mode == NULL)
-            return bad(w, NULL, "a %s request needs \"mode\"",
-                       _wc_command_name(R->command));
+        snprintf(text_key, sizeof text_key, "%s_text", key);
+        snprintf(text_name, sizeof text_name, "<%s_text>", key);
+        if ((s = _wc_request_own(R, text_name)) == NULL)
+            return wc_error_set(w->err, WC_EINTERNAL, NULL, 0, 0,
+                                "out of memory");
+        return get_input(FIELD(R, a, _wc_input), o, key, text_key, s, w);
+    }
+    if ((v = _wc_json_object_get(o, key)) == NULL)
+        return operand && !(a->flags & _WC_ARG_OPTIONAL)
+            ? bad(w, NULL, "a %s request needs \"%s\"",
+                  _wc_command_name(R->command), key)
+            : WC_OK;
+    switch (a->kind)
+    {
+    case _WC_ARG_FLAG:
+        return get_bool(FIELD(R, a, int), o, key, w);
+    case _WC_ARG_WRENCH:
+        return get_wrench(FIELD(R, a, _wc_triple), o, key, w);
+    case _WC_ARG_COUNT:
+    case _WC_ARG_SEED:
+        if (v->type != WC_JSON_NUMBER && v->type != WC_JSON_STRING)
+            return bad(w, v, "\"%s\" %s", key, a->what);
+        s = v->text;
+        break;
+    case _WC_ARG_NUMBER:
+    case _WC_ARG_LIST:
+    case _WC_ARG_ANGLE:
+        status = number_text(&s, v, key, w);
+        break;
+    default:
+        status = get_string(&s, NULL, o, key, w);
+        break;
     }
     if (status != WC_OK)
         return status;
-    switch (R->command)
-    {
-    case _WC_CONE:
-        return read_cone(R, o, w);
-    case _WC_MODES:
-        return get_bool(&R->witness, o, "witness", w);
-    case _WC_CLASSIFY:
-        status = get_wrench(R->wrench, &R->nwrench, o, "wrench", w);
-        if (status == WC_OK && R->nwrench == 0)
-            return bad(w, NULL, "a classify request needs \"wrench\"");
-        return status == WC_OK ? read_max_modes(R, o, w) : status;
-    case _WC_STABILITY:
-        status = get_wrench(R->bias, &n, o, "bias", w);
-        R->biased = n == 3;
-        if (status == WC_OK && (v = _wc_json_object_get(o, "length")) != NULL)
-            status = number_text(&R->length, v, "length", w);
-        return status;
-    case _WC_PLAN:
-        status = get_wrench(R->wrench, &R->nwrench, o, "wrench", w);
-        return status == WC_OK ? get_bool(&R->complete, o, "complete", w)
-            : status;
-    case _WC_COMPARE:
-        status = get_input(&R->foreign, o, "foreign", "foreign_text",
-                           "<foreign_text>", w);
-        return status == WC_OK ? read_tol(R, o, w) : status;
-    default:
-        return WC_OK;
-    }
+    if ((why = _wc_arg_set_text(R, a, s, msg, sizeof msg)) != NULL)
+        return bad(w, v, "%s", why);
+    return WC_OK;
 }
 
 /* The request in J into R.  */
 static int
 read_request(_wc_request * R, const wc_json_node * o, const where * w)
 {
+    const _wc_command_schema * S;
+    const _wc_arg * a, * culprit = NULL;
     const wc_json_node * v;
-    int c, status;
+    char msg[256], list[256] = "", key[64];
+    const char * why;
+    int status = WC_OK;
 
     if (o->type != WC_JSON_OBJECT)
         return bad(w, o, "a request is a JSON object, not %s",
@@ -328,15 +263,37 @@ read_request(_wc_request * R, const wc_json_node * o, const where * w)
         return bad(w, o, "the request needs \"command\"");
     if (v->type != WC_JSON_STRING)
         return bad(w, v, "\"command\" takes a string");
-    if ((c = _wc_command_find(v->text)) < 0)
-        return bad(w, v, "unknown command '%s' (cone, modes, feasible, "
-                   "classify, stability, plan or compare)", v->text);
-    _wc_request_init(R, (_wc_command) c);
-    if ((status = check_keys(o, R->command, w)) != WC_OK)
+    S = _wc_schema_find(v->text);
+    if (S == NULL || !(S->flags & _WC_CMD_REQUEST))
+    {
+        const _wc_command_schema * c;
+        int n = 0, k = 0;
+
+        for (c = _wc_schema; c->name != NULL; c++)
+            n += (c->flags & _WC_CMD_REQUEST) != 0;
+        for (c = _wc_schema; c->name != NULL; c++)
+            if (c->flags & _WC_CMD_REQUEST)
+                snprintf(list + strlen(list), sizeof list - strlen(list),
+                         "%s%s", k++ == 0 ? "" : k == n ? " or " : ", ",
+                         c->name);
+        return bad(w, v, "unknown command '%s' (%s)", v->text, list);
+    }
+    _wc_request_init(R, (_wc_command) (S - _wc_schema));
+    R->from_request = 1;
+    if ((status = check_keys(o, S, w)) != WC_OK)
         return status;
-    status = get_input(&R->problem, o, "problem", "problem_text",
-                       "<problem_text>", w);
-    return status == WC_OK ? read_options(R, o, w) : status;
+    for (a = S->operands; status == WC_OK && a->name != NULL; a++)
+        status = read_arg(R, a, 1, o, w);
+    for (a = S->options; status == WC_OK && a->name != NULL; a++)
+        if (!(a->flags & _WC_ARG_CLI))
+            status = read_arg(R, a, 0, o, w);
+    if (status != WC_OK || S->check == NULL
+        || (why = S->check(msg, sizeof msg, &culprit, R)) == NULL)
+        return status;
+    v = culprit != NULL
+        ? _wc_json_object_get(o, _wc_arg_key(key, sizeof key, culprit))
+        : NULL;
+    return bad(w, v, "%s", why);
 }
 
 /* The answer or the error record into a malloc'd *out.  */
@@ -378,6 +335,7 @@ wc_request_json_at(char ** out, size_t * outlen, const char * request,
     w.file = file != NULL ? file : "<request>";
     w.line = line >= 1 ? line : 1;
     w.err = err;
+    memset(&R, 0, sizeof R);
     _wc_json_init(J);
     _wc_answer_init(&A);
     status = _wc_json_parse(J, request, len, w.file, err);
@@ -404,6 +362,7 @@ wc_request_json_at(char ** out, size_t * outlen, const char * request,
     if (!have_answer)
         write_out(out, outlen, NULL, status, err);
     _wc_answer_clear(&A);
+    _wc_request_clear(&R);
     _wc_json_clear(J);
     return status;
 }

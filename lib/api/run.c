@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "api/run.h"
+#include "api/schema.h"
 #include "core/readall.h"
 #include "core/version.h"
 #include "io/print.h"
@@ -19,35 +20,18 @@
 #include "io/compareprint.h"
 #include "model/mode.h"
 
-static const char * const names[_WC_NCOMMANDS] = {
-    "cone", "modes", "feasible", "classify", "stability", "plan", "compare"
-};
-
 const char *
 _wc_command_name(_wc_command c)
 {
-    return (unsigned) c < _WC_NCOMMANDS ? names[c] : "?";
+    return (unsigned) c < _WC_NCOMMANDS ? _wc_schema[c].name : "?";
 }
 
 int
 _wc_command_find(const char * name)
 {
-    int c;
+    const _wc_command_schema * S = _wc_schema_find(name);
 
-    for (c = 0; c < _WC_NCOMMANDS; c++)
-        if (strcmp(name, names[c]) == 0)
-            return c;
-    return -1;
-}
-
-void
-_wc_request_init(_wc_request * R, _wc_command c)
-{
-    memset(R, 0, sizeof *R);
-    R->command = c;
-    R->method = WC_METHOD_DIRECT;
-    R->max_modes = 1000;
-    R->tol = WC_COMPARE_TOL;
+    return S != NULL ? (int) (S - _wc_schema) : -1;
 }
 
 void
@@ -218,8 +202,8 @@ run_stability(_wc_answer * A, const _wc_request * R, wc_error_t err)
 {
     int status = WC_OK;
 
-    if (R->biased)
-        status = _wc_parse_numbers(A->b, R->bias, 3, "<bias>", err);
+    if (R->bias.given)
+        status = _wc_parse_numbers(A->b, R->bias.v, 3, "<bias>", err);
     if (status == WC_OK && R->length != NULL)
     {
         status = _wc_parse_numbers(A->L, &R->length, 1, "<length>", err);
@@ -229,7 +213,7 @@ run_stability(_wc_answer * A, const _wc_request * R, wc_error_t err)
     }
     if (status == WC_OK)
         status = wc_stability(A->S, A->P, err);
-    if (status == WC_OK && R->biased)
+    if (status == WC_OK && R->bias.given)
         status = robustness(A, err);
     return status;
 }
@@ -242,10 +226,10 @@ run_plan(_wc_answer * A, const _wc_request * R, wc_error_t err)
     if (R->certificates)
         status = wc_problem_check_fixels(A->P, WC_PLAN_CERT_MAX_FIXELS, 0,
                                          "a plan certificate", err);
-    if (status == WC_OK && R->nwrench == 3)
-        status = _wc_parse_numbers(A->g, R->wrench, 3, "<wrench>", err);
+    if (status == WC_OK && R->wrench.given)
+        status = _wc_parse_numbers(A->g, R->wrench.v, 3, "<wrench>", err);
     if (status == WC_OK)
-        status = R->nwrench == 3
+        status = R->wrench.given
             ? wc_plan_wrench(A->pw, A->P, A->g, R->complete, err)
             : wc_plan(A->plan, A->P, R->complete, err);
     return status;
@@ -294,7 +278,7 @@ _wc_run(_wc_answer * A, const _wc_request * R, wc_error_t err)
     case _WC_FEASIBLE:
         return wc_feasible(A->C, A->P, R->mode, err);
     case _WC_CLASSIFY:
-        status = _wc_parse_numbers(A->g, R->wrench, 3, "<wrench>", err);
+        status = _wc_parse_numbers(A->g, R->wrench.v, 3, "<wrench>", err);
         if (status == WC_OK)
             status = wc_classify(A->K, A->P, A->g, R->certificates,
                                  R->max_modes, err);
@@ -397,12 +381,12 @@ _wc_answer_fprint_json(FILE * out, const _wc_answer * A)
         break;
     case _WC_STABILITY:
         wc_stability_fprint(out, A->S, 2);
-        if (R->biased)
+        if (R->bias.given)
             fprint_bias_json(out, A);
         fputs("}\n", out);
         break;
     case _WC_PLAN:
-        if (R->nwrench == 3)
+        if (R->wrench.given)
             wc_plan_wrench_fprint(out, A->pw, 1);
         else
             wc_plan_fprint(out, A->plan, A->P, 1);

@@ -28,7 +28,7 @@
 #include "float/floatcone.h"
 #include "float/compare.h"
 
-/* The computing commands.  */
+/* The commands, in the order of the schema's table (schema.c).  */
 typedef enum
 {
     _WC_CONE = 0,
@@ -37,12 +37,18 @@ typedef enum
     _WC_CLASSIFY,
     _WC_STABILITY,
     _WC_PLAN,
+    _WC_SWEEP,
+    _WC_VERIFY,
     _WC_COMPARE,
+    _WC_RANDOM,
+    _WC_DRAW,
+    _WC_REPORT,
+    _WC_BATCH,
     _WC_NCOMMANDS
 }
 _wc_command;
 
-/* The command's name, "cone" ... "compare"; -1 from _wc_command_find
+/* The command's name, "cone" ... "batch"; -1 from _wc_command_find
    when name is none of them.  */
 const char * _wc_command_name(_wc_command c);
 int _wc_command_find(const char * name);
@@ -65,36 +71,67 @@ typedef struct
 }
 _wc_input;
 
-/* A command's arguments.  Numbers are kept as written, read (and their
-   errors located, "<wrench>:1:COL") when the command needs them, after
-   the problem, as on the command line.  */
+/* Three numbers FX, FY, TAU as written; given: whether they were.  */
 typedef struct
 {
+    int given;
+    const char * v[3];
+}
+_wc_triple;
+
+/* A command's arguments, every command's in one record: the schema's rows
+   (schema.c) name the field each operand and option is read into.
+   Numbers are kept as written, read (and their errors located,
+   "<wrench>:1:COL") when the command needs them, after the problem, as on
+   the command line.  */
+typedef struct _wc_request_struct
+{
     _wc_command command;
+    int from_request;           /* read from a JSON request, not argv */
+    int format;                 /* the command line's --format (cli.h) */
     _wc_input problem;
-    const char * mode;          /* cone, feasible, compare */
-    wc_method method;           /* cone */
+    const char * mode;          /* cone, feasible, compare; draw --mode */
+    int method;                 /* cone: a wc_method */
     int trace;                  /* cone */
     int arith_double;           /* cone: --arith=double (with paper) */
+    int all_modes;              /* cone */
     int witness;                /* modes */
     long max_modes;             /* classify: 0 is no limit */
-    int certificates;           /* the command line's --certificate:
-                                   classify computes the certificates'
+    const char * certificate;   /* the command line's --certificate=FILE */
+    int certificates;           /* classify computes the certificates'
                                    data, plan checks the fixel limit of
                                    a plan certificate first */
     int complete;               /* plan */
-    int nwrench;                /* classify 3; plan 0 or 3 */
-    const char * wrench[3];
-    int biased;                 /* stability --bias */
-    const char * bias[3];
+    _wc_triple wrench;          /* classify, plan; draw --wrench */
+    _wc_triple bias;            /* stability --bias */
     const char * length;        /* stability --length, or NULL */
     _wc_input foreign;          /* compare's FILE */
     double tol;                 /* compare */
+    _wc_input cert;             /* verify's CERTFILE */
+    const char * friction;      /* sweep --friction=LIST; random MU[,MUK] */
+    int critical;               /* sweep */
+    const char * width;         /* sweep */
+    const char * max_friction;  /* sweep */
+    long fixels;                /* random */
+    unsigned long long seed;    /* random */
+    int degenerate;             /* random */
+    int shape;                  /* random: none, disk, polygon */
+    int fig_modes, fig_stability, fig_plan, fig_graph;  /* draw */
+    const char * sweep;         /* draw --sweep=LIST */
+    const char * graph_wrench;  /* draw --wrench=FX,FY,TAU, as written */
+    const char * output;        /* draw, report: -o FILE */
+    const char * batch;         /* batch's FILE, "-" by default */
+    char * owned[8];            /* copies this record owns: FX,FY,TAU
+                                   cut, names, standard input's text */
 }
 _wc_request;
 
-/* Defaults: every option as the command line has it without options.  */
+/* Defaults: every option as the command line has it without options (the
+   schema's defaults).  */
 void _wc_request_init(_wc_request * R, _wc_command c);
+
+/* Free what R owns (the split copies of FX,FY,TAU values).  */
+void _wc_request_clear(_wc_request * R);
 
 /* The answer of one request.  */
 typedef struct
