@@ -31,6 +31,7 @@
 #include "analysis/push.h"
 #include "analysis/stability.h"
 #include "analysis/plan.h"
+#include "analysis/sweep.h"
 #include "core/version.h"
 #include "core/progress.h"
 #include "api/request.h"

@@ -383,9 +383,8 @@ print_request(_wc_request * R, const _wc_command_schema * S)
     int status = WC_OK;
 
     if (!(S->flags & _WC_CMD_REQUEST))
-        return cli_usage_error(S->name, "'%s' is not a request command "
-                               "(yet): --print-request does not apply",
-                               S->name);
+        return cli_usage_error(S->name, "'%s' is not a request: "
+                               "--print-request does not apply", S->name);
     wc_error_init(err);
     for (a = S->operands; status == WC_OK && a->name != NULL; a++)
     {

@@ -1,7 +1,6 @@
-/* cli-request.c -- the computing commands' --format=json, and cone
-   --all-modes, through the library's request layer (api/run.h): the
-   command line, `batch` and wc_request_json print the same bytes because
-   they run the same code.
+/* cli-request.c -- a command line answered through the library's request
+   layer (api/run.h): the command line, `batch` and wc_request_json print
+   the same bytes because they run the same code.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -25,40 +24,79 @@ cli_input(_wc_input * in, const char * path)
         in->path = path;
 }
 
+typedef struct
+{
+    const _wc_answer * A;
+    wc_error_struct * err;
+}
+cert_job;
+
+static int
+put_certificate(FILE * f, const void * p)
+{
+    const cert_job * j = p;
+
+    return _wc_answer_fprint_certificate(f, j->A, j->err);
+}
+
+static int
+put_answer(FILE * f, const void * A)
+{
+    return _wc_answer_fprint(f, A);
+}
+
 int
-cli_run_print(const _wc_request * R, void (*print)(const _wc_answer * A))
+cli_answer(_wc_request * R)
 {
     _wc_answer A;
     wc_error_t err;
     int status;
 
-    _wc_answer_init(&A);
+    R->certificates = R->certificate != NULL;
+    _wc_answer_init(&A, R);
     wc_error_init(err);
-    status = _wc_run(&A, R, err);
-    if (status != WC_OK)
+    status = _wc_run(&A, err);
+    if (status == WC_OK && R->certificate != NULL)
+    {
+        cert_job j = { &A, err };
+
+        status = cli_write_certificate(R->certificate, put_certificate, &j);
+        if (status != WC_OK && err->message == NULL)
+            status = -status;       /* reported already */
+    }
+    if (status > 0)
         cli_report(err, status);
+    else if (status < 0)
+        status = -status;
+    else if (R->output != NULL && strcmp(R->output, "-") != 0)
+        status = cli_write_whole(R->output, R->command == _WC_DRAW ? "figure"
+                                 : _wc_command_name(R->command), put_answer,
+                                 &A);
     else
     {
-        print(&A);
+        _wc_answer_fprint(stdout, &A);
         status = cli_finish_output();
-        if (status == WC_OK)
-            status = _wc_answer_status(&A);
     }
+    if (status == WC_OK)
+        status = _wc_answer_status(&A);
     wc_error_clear(err);
     _wc_answer_clear(&A);
     return status;
 }
 
-static void
-print_json(const _wc_answer * A)
+int
+cli_command_run(const cli_command * self, int argc, char ** argv)
 {
-    _wc_answer_fprint_json(stdout, A);
+    _wc_request R;
+    int status = cli_parse(&R, self, argc, argv);
+
+    return cli_done(&R, status >= 0 ? status : cli_answer(&R));
 }
 
 int
-cli_run_json(const _wc_request * R)
+cli_command_run_output(const cli_command * self, int argc, char ** argv)
 {
-    return cli_run_print(R, print_json);
+    return cli_run_with_output(cli_command_run, self, argc, argv);
 }
 
 /* The lines are gathered in memory and written once all are computed:

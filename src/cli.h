@@ -38,10 +38,6 @@ struct cli_command
    schema (wrenchcone.c).  */
 extern const cli_command cli_commands[];
 
-/* Inputs larger than these are refused before they are parsed: a problem
-   of a million fixels is far below the first, and a certificate carries
-   at most two rows per fixel.  */
-#define CLI_MAX_CERTIFICATE_BYTES ((size_t) 64 << 20)
 
 typedef enum { FMT_TEXT, FMT_JSON, FMT_CDD, FMT_INE, FMT_EXT } cli_format;
 
@@ -83,26 +79,6 @@ int cli_write_certificate(const char * path,
                           int (*put)(FILE *, const void *),
                           const void * data);
 
-/* What a certificate file certifies: answer is a wc_certificate_struct,
-   wc_classify_struct, wc_stability_struct, wc_plan_struct or
-   wc_critical_struct (kind "mode-feasibility", "strong-stability",
-   "stability-set", "plan-goal" or "critical-friction").  */
-typedef enum
-{
-    CLI_CERT_FEASIBLE, CLI_CERT_CLASSIFY, CLI_CERT_STABILITY, CLI_CERT_PLAN,
-    CLI_CERT_CRITICAL
-}
-cli_cert_kind;
-
-/* The end of a command that may write a certificate: status is how
-   computing its answer ended.  When that is WC_OK and path is not NULL,
-   write the certificate of answer for P to path.  Reports err when
-   computing or proving failed.  Returns WC_OK when the command goes on
-   to print its answer, else its exit status.  */
-int cli_certify(int status, const char * path, cli_cert_kind kind,
-                const wc_problem_struct * P, const void * answer,
-                wc_error_struct * err);
-
 /* --- cli-output.c: whole output files, -o FILE --- */
 
 /* Write path with put(f, data) through a temporary file in the same
@@ -129,14 +105,17 @@ int cli_run_with_output(int (*run)(const cli_command *, int, char **),
    stdin, named "<stdin>").  */
 void cli_input(_wc_input * in, const char * path);
 
-/* Answer R and print the answer with print (on stdout), or report its
-   error: the exit status (4 for a comparison beyond its tolerance).  */
-int cli_run_print(const _wc_request * R,
-                  void (*print)(const _wc_answer * A));
+/* Answer R (parsed) and print the answer in R's format on stdout, or
+   to R->output, and write R->certificate; or report the error.  The exit
+   status (4 for a comparison beyond its tolerance, or a certificate that
+   does not hold).  */
+int cli_answer(_wc_request * R);
 
-/* cli_run_print with the answer's JSON (exactly what batch and
-   wc_request_json give).  */
-int cli_run_json(const _wc_request * R);
+/* A command that is its request: cli_parse, then cli_answer; _output:
+   with -o FILE read as --output=FILE first (cli_run_with_output).  */
+int cli_command_run(const cli_command * self, int argc, char ** argv);
+int cli_command_run_output(const cli_command * self, int argc,
+                           char ** argv);
 
 /* cone --all-modes: every mode's cone JSON, one line each, written once
    all are computed; the exit status.  */

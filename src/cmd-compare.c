@@ -13,13 +13,6 @@
 #include "cli.h"
 #include "commands.h"
 
-static void
-print_comparison(const _wc_answer * A)
-{
-    wc_comparison_fprint(stdout, A->cmp, A->W, A->R->problem.name,
-                         A->R->mode, A->R->foreign.name, 0);
-}
-
 int
 cmd_compare(const cli_command * self, int argc, char ** argv)
 {
@@ -32,7 +25,6 @@ cmd_compare(const cli_command * self, int argc, char ** argv)
         status = cli_usage_error("compare", "PROBLEM and FILE cannot both be "
                                  "standard input%s", "");
     else
-        status = cli_format_of(&R) == FMT_JSON ? cli_run_json(&R)
-            : cli_run_print(&R, print_comparison);
+        status = cli_answer(&R);
     return cli_done(&R, status);
 }

@@ -1,6 +1,7 @@
-/* commands.h -- the commands of the program, one file each (cmd-NAME.c):
-   its function (its usage and options are its row of the
-   schema, lib/api/schema.c).
+/* commands.h -- the commands of the program that do more on the command
+   line than answer their request (cli_command_run): their files
+   (cmd-NAME.c).  The usage and options of every command are its row of
+   the schema (lib/api/schema.c).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -12,29 +13,7 @@
 #include "cli.h"
 
 int cmd_cone(const cli_command * self, int argc, char ** argv);
-
-int cmd_modes(const cli_command * self, int argc, char ** argv);
-
-int cmd_feasible(const cli_command * self, int argc, char ** argv);
-
-int cmd_verify(const cli_command * self, int argc, char ** argv);
-
-int cmd_random(const cli_command * self, int argc, char ** argv);
-
 int cmd_compare(const cli_command * self, int argc, char ** argv);
-
-int cmd_classify(const cli_command * self, int argc, char ** argv);
-
-int cmd_stability(const cli_command * self, int argc, char ** argv);
-
-int cmd_plan(const cli_command * self, int argc, char ** argv);
-
-int cmd_sweep(const cli_command * self, int argc, char ** argv);
-
-int cmd_draw(const cli_command * self, int argc, char ** argv);
-
-int cmd_report(const cli_command * self, int argc, char ** argv);
-
 int cmd_batch(const cli_command * self, int argc, char ** argv);
 
 #endif

@@ -36,10 +36,6 @@
    that the two programs' messages are byte for byte the same.  */
 #define WHO CLI_WHO
 
-/* As `wrenchcone verify` (src/cli.h): a certificate carries at most two
-   rows per fixel.  */
-#define MAX_CERTIFICATE_BYTES ((size_t) 64 << 20)
-
 static const char usage[] =
     "Usage: " PROG " [OPTIONS] CERTFILE\n"
     "Re-check a certificate with GMP arithmetic alone: 'wrenchcone verify'\n"
@@ -124,7 +120,7 @@ main(int argc, char ** argv)
         return status;
     path = argv[optind];
     wc_error_init(err);
-    status = cli_read_all(&text, &len, path, MAX_CERTIFICATE_BYTES, err);
+    status = cli_read_all(&text, &len, path, WC_CERTIFICATE_MAX_BYTES, err);
     if (status == WC_OK)
         status = wc_verify_fprint(stdout, &holds, text, len,
                                   cli_input_name(path), json, err);

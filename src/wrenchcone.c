@@ -6,8 +6,10 @@
    Public License, version 2 or (at your option) any later version.
 
    Each command is a row of the library's schema (lib/api/schema.c: its
-   usage, operands and options) and a file of its own here (cmd-NAME.c)
-   that runs it; cli.c and cli-options.c hold what they share.
+   usage, operands and options) and of its runners (lib/api/run.h: what
+   it computes and prints).  Most commands are nothing more here than
+   that request (cli_command_run); the few with a command-line rule of
+   their own have a file (cmd-NAME.c).
    `wrenchcone --schema` prints the schema as JSON.  */
 
 #include <config.h>
@@ -20,17 +22,17 @@
 
 const cli_command cli_commands[] = {
     { _wc_schema + _WC_CONE, cmd_cone },
-    { _wc_schema + _WC_MODES, cmd_modes },
-    { _wc_schema + _WC_FEASIBLE, cmd_feasible },
-    { _wc_schema + _WC_CLASSIFY, cmd_classify },
-    { _wc_schema + _WC_STABILITY, cmd_stability },
-    { _wc_schema + _WC_PLAN, cmd_plan },
-    { _wc_schema + _WC_SWEEP, cmd_sweep },
-    { _wc_schema + _WC_VERIFY, cmd_verify },
+    { _wc_schema + _WC_MODES, cli_command_run },
+    { _wc_schema + _WC_FEASIBLE, cli_command_run },
+    { _wc_schema + _WC_CLASSIFY, cli_command_run },
+    { _wc_schema + _WC_STABILITY, cli_command_run },
+    { _wc_schema + _WC_PLAN, cli_command_run },
+    { _wc_schema + _WC_SWEEP, cli_command_run },
+    { _wc_schema + _WC_VERIFY, cli_command_run },
     { _wc_schema + _WC_COMPARE, cmd_compare },
-    { _wc_schema + _WC_RANDOM, cmd_random },
-    { _wc_schema + _WC_DRAW, cmd_draw },
-    { _wc_schema + _WC_REPORT, cmd_report },
+    { _wc_schema + _WC_RANDOM, cli_command_run },
+    { _wc_schema + _WC_DRAW, cli_command_run_output },
+    { _wc_schema + _WC_REPORT, cli_command_run_output },
     { _wc_schema + _WC_BATCH, cmd_batch },
     { NULL, NULL }
 };

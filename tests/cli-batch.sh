@@ -183,7 +183,7 @@ cat > "$tmp/bad.jsonl" <<'EOF'
 {"command": "cone", "problem": "data/section4.wc", "mode": "na"
 
 [1, 2]
-{"command": "draw", "problem": "data/section4.wc"}
+{"command": "batch", "problem": "data/section4.wc"}
 {"command": "cone", "problem": "data/section4.wc", "mode": "na", "witness": true}
 {"command": "cone", "problem": "data/section4.wc"}
 {"command": "cone", "problem": "data/section4.wc", "mode": 3}
@@ -202,7 +202,7 @@ B=$tmp/bad.jsonl
 cat > "$tmp/want" <<EOF
 {"format": "wrenchcone-json/1", "error": {"message": "unexpected end of input", "file": "$B", "line": 1, "column": 64, "status": 2}}
 {"format": "wrenchcone-json/1", "error": {"message": "a request is a JSON object, not an array", "file": "$B", "line": 3, "column": 1, "status": 2}}
-{"format": "wrenchcone-json/1", "error": {"message": "unknown command 'draw' (cone, modes, feasible, classify, stability, plan or compare)", "file": "$B", "line": 4, "column": 13, "status": 2}}
+{"format": "wrenchcone-json/1", "error": {"message": "unknown command 'batch' (cone, modes, feasible, classify, stability, plan, sweep, verify, compare, random, draw or report)", "file": "$B", "line": 4, "column": 13, "status": 2}}
 {"format": "wrenchcone-json/1", "error": {"message": "\"witness\" is not a key of a cone request", "file": "$B", "line": 5, "column": 66, "status": 2}}
 {"format": "wrenchcone-json/1", "error": {"message": "a cone request needs \"mode\"", "file": "$B", "line": 6, "column": 1, "status": 2}}
 {"format": "wrenchcone-json/1", "error": {"message": "\"mode\" takes a string", "file": "$B", "line": 7, "column": 60, "status": 2}}

@@ -142,7 +142,7 @@ usage_error random-fixels-big random --fixels=1001
 usage_error random-seed-overflow random --seed=18446744073709551616
 usage_error random-shape random --shape=square
 usage_error random-friction random --friction=1/5,-1
-usage_error random-format random --format=json
+usage_error random-format random --format=cdd
 usage_error random-operand random extra
 usage_error bogus-option --bogus
 usage_error cone-bogus-option cone --bogus "$bad/modes.wc" na

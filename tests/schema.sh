@@ -52,7 +52,7 @@ entries = {}
 for k, (pos, name) in enumerate(starts):
     end = starts[k + 1][0] if k + 1 < len(starts) else len(commands)
     entries[name] = entries.get(name, "") + commands[pos:end]
-every = {"help", "version", "progress", "decimals", "print-request"}
+every = {"help", "version", "progress", "decimals", "print-request", "schema"}
 known = set(every)
 for c in schema["commands"]:
     if c["name"] not in entries:
@@ -109,6 +109,45 @@ same_answer stability stability --bias 0 -1 0 --length=1/2 "$D/section4.wc"
 same_answer plan plan "$D/three-fixels.wc"
 same_answer plan-wrench plan --complete "$D/three-fixels.wc" 0 -1 0
 same_answer compare compare --tol=1e-6 "$D/section4.wc" na "$top_srcdir/tests/golden/section4-na.json"
+same_answer sweep sweep --critical --friction=0,1/10 "$D/three-fixels.wc"
+same_answer random random --seed=7 --fixels=4 --shape=polygon --degenerate
+"$W" classify --certificate="$tmp/cert.json" "$D/section4.wc" 0 -1 0 > /dev/null \
+    || fail certificate "classify --certificate: exit $?"
+same_answer verify verify "$tmp/cert.json"
+
+# draw and report: the answer's document is what -o writes.
+same_document() { # NAME KEY ARGS... (-o FILE appended)
+    name=$1; key=$2; shift 2
+    "$W" "$@" -o "$tmp/doc" --print-request > "$tmp/req" 2> "$tmp/err" \
+        || { fail "$name" "--print-request: exit $?: $(cat "$tmp/err")"; return; }
+    "$W" "$@" -o "$tmp/doc" || { fail "$name" "exit $?"; return; }
+    "$W" batch "$tmp/req" | python3 -c 'import json, sys
+sys.stdout.write(json.loads(sys.stdin.readline())[sys.argv[1]])' "$key" > "$tmp/got" \
+        || { fail "$name" "no $key in the answer"; return; }
+    cmp -s "$tmp/got" "$tmp/doc" || fail "$name" "the answer's $key differs from -o's file"
+}
+same_document draw-mode svg draw --mode=na "$D/section4.wc"
+same_document draw-sweep svg draw --sweep=0,1/5 "$D/three-fixels.wc"
+same_document draw-graph svg draw --graph --wrench=0,-1,0 "$D/three-fixels.wc"
+same_document report html report "$D/section4.wc"
+
+# "certificate": true: the answer carries what --certificate writes, on
+# one line, and it holds.
+for req in '"command": "classify", "problem": "'"$D"'/section4.wc", "wrench": [0, -1, 0]' \
+           '"command": "feasible", "problem": "'"$D"'/section4.wc", "mode": "na"' \
+           '"command": "plan", "problem": "'"$D"'/three-fixels.wc"'; do
+    printf '{%s, "certificate": true}\n' "$req" | "$W" batch > "$tmp/ans" \
+        || { fail certificate "$req: exit $?"; continue; }
+    python3 -c 'import json, sys
+json.dump(json.loads(open(sys.argv[1]).readline())["certificate"], sys.stdout)' "$tmp/ans" > "$tmp/c.json" \
+        && "$W" verify "$tmp/c.json" > /dev/null \
+        || fail certificate "$req: the certificate in the answer does not verify"
+done
+
+# batch is not a request.
+"$W" batch --print-request /dev/null > "$tmp/out" 2> /dev/null
+[ $? = 2 ] && [ ! -s "$tmp/out" ] || fail batch "--print-request is not refused"
+
 # Standard input becomes problem_text.
 "$W" cone --print-request - na < "$D/section4.wc" > "$tmp/req" \
     && "$W" batch "$tmp/req" > "$tmp/got" \

@@ -25,14 +25,16 @@ lib_libwc_la_SOURCES += \
 	lib/analysis/plangraph.c \
 	lib/analysis/plan.c \
 	lib/analysis/robust.c \
-	lib/analysis/plansweep.c
+	lib/analysis/plansweep.c \
+	lib/analysis/sweep.c
 wcanalysisdir = $(pkgincludedir)/analysis
 wcanalysis_HEADERS = \
 	lib/analysis/wrench.h \
 	lib/analysis/kinematics.h \
 	lib/analysis/push.h \
 	lib/analysis/stability.h \
-	lib/analysis/plan.h
+	lib/analysis/plan.h \
+	lib/analysis/sweep.h
 noinst_HEADERS += \
 	lib/analysis/direct3.h \
 	lib/analysis/zrows3.h \

@@ -6,6 +6,9 @@ lib_libwc_la_SOURCES += \
 	lib/api/schemaprint.c \
 	lib/api/args.c \
 	lib/api/run.c \
+	lib/api/runexact.c \
+	lib/api/runsets.c \
+	lib/api/rundocs.c \
 	lib/api/request.c
 wcapidir = $(pkgincludedir)/api
 wcapi_HEADERS = \
@@ -13,4 +16,5 @@ wcapi_HEADERS = \
 noinst_HEADERS += \
 	lib/api/schema.h \
 	lib/api/args.h \
+	lib/api/runners.h \
 	lib/api/run.h

@@ -15,6 +15,8 @@
 #include "api/request.h"
 #include "api/args.h"
 #include "api/run.h"
+#include "api/schema.h"
+#include "api/runners.h"
 #include "core/json.h"
 
 /* Where the request's errors are located.  */
@@ -173,7 +175,10 @@ check_keys(const wc_json_node * o, const _wc_command_schema * S,
     {
         const wc_json_node * key = _wc_json_object_key(o, i);
         const _wc_arg * a = NULL;
-        int found = strcmp(key->text, "command") == 0;
+        int found = strcmp(key->text, "command") == 0
+            || (strcmp(key->text, "certificate") == 0
+                && _wc_runners[S - _wc_schema] != NULL
+                && _wc_runners[S - _wc_schema]->certificate != NULL);
 
         for (a = S->operands; !found && a->name != NULL; a++)
             found = names_row(key->text, a);
@@ -287,6 +292,11 @@ read_request(_wc_request * R, const wc_json_node * o, const where * w)
     for (a = S->options; status == WC_OK && a->name != NULL; a++)
         if (!(a->flags & _WC_ARG_CLI))
             status = read_arg(R, a, 0, o, w);
+    /* "certificate": true, the answer carries the certificate document
+       (what --certificate=FILE writes).  */
+    if (status == WC_OK)
+        status = get_bool(&R->want_certificate, o, "certificate", w);
+    R->certificates = R->want_certificate;
     if (status != WC_OK || S->check == NULL
         || (why = S->check(msg, sizeof msg, &culprit, R)) == NULL)
         return status;
@@ -294,6 +304,47 @@ read_request(_wc_request * R, const wc_json_node * o, const where * w)
         ? _wc_json_object_get(o, _wc_arg_key(key, sizeof key, culprit))
         : NULL;
     return bad(w, v, "%s", why);
+}
+
+/* The answer's JSON with the certificate document as its last member
+   "certificate".  */
+static int
+fprint_with_certificate(FILE * out, const _wc_answer * A, wc_error_t err)
+{
+    char * buf = NULL, * cert = NULL;
+    size_t size = 0, csize = 0;
+    FILE * f = open_memstream(&buf, &size), * g = open_memstream(&cert,
+                                                                 &csize);
+    int status = f != NULL && g != NULL ? WC_OK : WC_EINTERNAL;
+
+    if (status == WC_OK)
+        status = _wc_answer_fprint_json(f, A);
+    if (status == WC_OK)
+        status = _wc_answer_fprint_certificate(g, A, err);
+    if (f != NULL && fclose(f) != 0)
+        status = WC_EINTERNAL;
+    if (g != NULL && fclose(g) != 0)
+        status = WC_EINTERNAL;
+    /* Both are one JSON object and a newline; the certificate's lines
+       are joined (a JSON string holds no raw newline, so every newline
+       and the indentation after it lie between tokens).  */
+    if (status == WC_OK && size >= 2 && csize >= 1)
+    {
+        size_t i;
+
+        fwrite(buf, 1, size - 2, out);
+        fputs(", \"certificate\": ", out);
+        for (i = 0; i < csize; i++)
+            if (cert[i] == '\n')
+                while (i + 1 < csize && cert[i + 1] == ' ')
+                    i++;
+            else
+                putc(cert[i], out);
+        fputs("}\n", out);
+    }
+    free(buf);
+    free(cert);
+    return status;
 }
 
 /* The answer or the error record into a malloc'd *out.  */
@@ -308,12 +359,15 @@ write_out(char ** out, size_t * outlen, const _wc_answer * A, int status,
 
     if (f == NULL)
         return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
-    wst = A != NULL ? _wc_answer_fprint_json(f, A)
-        : _wc_error_fprint_json(f, err, status);
+    wst = A == NULL ? _wc_error_fprint_json(f, err, status)
+        : A->R->want_certificate ? fprint_with_certificate(f, A, err)
+        : _wc_answer_fprint_json(f, A);
     if (fclose(f) != 0 || wst != WC_OK)
     {
         free(buf);
-        return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
+        if (err->message == NULL)
+            wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
+        return WC_EINTERNAL;
     }
     *out = buf;
     *outlen = size;
@@ -328,7 +382,7 @@ wc_request_json_at(char ** out, size_t * outlen, const char * request,
     _wc_request R;
     _wc_answer A;
     where w;
-    int status, have_answer = 0;
+    int status, have_answer = 0, answered = 0;
 
     *out = NULL;
     *outlen = 0;
@@ -337,7 +391,6 @@ wc_request_json_at(char ** out, size_t * outlen, const char * request,
     w.err = err;
     memset(&R, 0, sizeof R);
     _wc_json_init(J);
-    _wc_answer_init(&A);
     status = _wc_json_parse(J, request, len, w.file, err);
     if (status == WC_EINPUT)
     {
@@ -348,7 +401,11 @@ wc_request_json_at(char ** out, size_t * outlen, const char * request,
     if (status == WC_OK)
         status = read_request(&R, &J->root, &w);
     if (status == WC_OK)
-        status = _wc_run(&A, &R, err);
+    {
+        _wc_answer_init(&A, &R);
+        answered = 1;
+        status = _wc_run(&A, err);
+    }
     if (status == WC_OK)
     {
         have_answer = 1;
@@ -361,7 +418,8 @@ wc_request_json_at(char ** out, size_t * outlen, const char * request,
     }
     if (!have_answer)
         write_out(out, outlen, NULL, status, err);
-    _wc_answer_clear(&A);
+    if (answered)
+        _wc_answer_clear(&A);
     _wc_request_clear(&R);
     _wc_json_clear(J);
     return status;
@@ -378,4 +436,25 @@ void
 wc_request_free(char * out)
 {
     free(out);
+}
+
+int
+wc_request_schema(char ** out, size_t * outlen)
+{
+    FILE * f = open_memstream(out, outlen);
+    int status;
+
+    if (f == NULL)
+    {
+        *out = NULL;
+        return WC_EINTERNAL;
+    }
+    status = _wc_schema_fprint_json(f);
+    if (fclose(f) != 0 || status != WC_OK)
+    {
+        free(*out);
+        *out = NULL;
+        return WC_EINTERNAL;
+    }
+    return WC_OK;
 }

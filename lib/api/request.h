@@ -80,6 +80,13 @@ int wc_request_json_at(char ** out, size_t * outlen, const char * request,
    fine): free() of the allocator the library was linked with.  */
 void wc_request_free(char * out);
 
+/* The commands a request may name, with their keys, the kinds of their
+   values, defaults and help, as one JSON document in a malloc'd *out of
+   *outlen bytes (free with wc_request_free): what `wrenchcone --schema`
+   prints, and what the Python module builds its functions from.
+   Returns WC_OK, or WC_EINTERNAL when out of memory (*out NULL).  */
+int wc_request_schema(char ** out, size_t * outlen);
+
 #ifdef __cplusplus
 }
 #endif

@@ -25,8 +25,10 @@
 #include "analysis/kinematics.h"
 #include "analysis/stability.h"
 #include "analysis/plan.h"
+#include "analysis/sweep.h"
 #include "float/floatcone.h"
 #include "float/compare.h"
+#include "io/answerprint.h"
 
 /* The commands, in the order of the schema's table (schema.c).  */
 typedef enum
@@ -98,6 +100,7 @@ typedef struct _wc_request_struct
     int witness;                /* modes */
     long max_modes;             /* classify: 0 is no limit */
     const char * certificate;   /* the command line's --certificate=FILE */
+    int want_certificate;       /* a request's "certificate": true */
     int certificates;           /* classify computes the certificates'
                                    data, plan checks the fixel limit of
                                    a plan certificate first */
@@ -133,52 +136,134 @@ void _wc_request_init(_wc_request * R, _wc_command c);
 /* Free what R owns (the split copies of FX,FY,TAU values).  */
 void _wc_request_clear(_wc_request * R);
 
-/* The answer of one request.  */
+/* What each command computes: its member of _wc_answer's union, and
+   nothing of the others'.  */
 typedef struct
 {
-    _wc_command command;
-    wc_problem_t P;
     wc_cone_t W;
     wc_trace_t T;
-    wc_fcone_t F;
-    wc_modes_t M;
-    wc_certificate_t C;
+    wc_fcone_t F;               /* --arith=double */
+}
+_wc_cone_answer;
+
+typedef struct
+{
+    fmpq g[3];                  /* the wrench */
     wc_classify_t K;
+}
+_wc_classify_answer;
+
+typedef struct
+{
     wc_stability_t S;
+    _wc_bias bias;              /* --bias's robustness, --length */
+}
+_wc_stability_answer;
+
+typedef struct
+{
+    fmpq g[3];                  /* the wrench, when given */
     wc_plan_t plan;
     wc_plan_wrench_t pw;
+}
+_wc_plan_answer;
+
+typedef struct
+{
+    wc_cone_t W;
     wc_comparison_t cmp;
-    fmpq g[3];                  /* the wrench */
-    fmpq b[3];                  /* the bias */
-    fmpq_t L;                   /* the norm's length, 1 by default */
-    fmpq_t rho[2];              /* robustness in strong, strong_paper */
-    int closed[2], infinite[2], in_set[2];
+}
+_wc_compare_answer;
+
+/* A document computed whole (verify's report, random's problem, draw's
+   SVG, report's HTML): text[0..len), malloc'd; holds: verify's
+   verdict.  */
+typedef struct
+{
+    char * text;
+    size_t len;
+    int holds;
+}
+_wc_text_answer;
+
+/* The answer of one request.  */
+typedef struct _wc_answer_struct
+{
+    _wc_command command;
     const _wc_request * R;      /* the request answered (not owned) */
+    wc_problem_t P;             /* its problem, when it has one */
+    union
+    {
+        _wc_cone_answer cone;
+        wc_modes_t modes;
+        wc_certificate_t feasible;
+        _wc_classify_answer classify;
+        _wc_stability_answer stability;
+        _wc_plan_answer plan;
+        wc_sweep_t sweep;
+        _wc_compare_answer compare;
+        _wc_text_answer text;
+    }
+    u;
 }
 _wc_answer;
 
-void _wc_answer_init(_wc_answer * A);
+/* A command's behaviour: its answer's init and clear, computing it, and
+   writing it.  One row per command, in the schema's order (runs.c).  */
+typedef struct
+{
+    void (*init)(_wc_answer * A);
+    void (*clear)(_wc_answer * A);
+    int (*run)(_wc_answer * A, wc_error_t err);
+    /* The answer as `COMMAND --format=json` prints it: one line.  */
+    int (*json)(FILE * out, const _wc_answer * A);
+    /* The command line's other formats (R->format: text, cdd ...).  */
+    int (*print)(FILE * out, const _wc_answer * A);
+    /* The certificate document that --certificate=FILE writes (NULL:
+       the command has none); WC_EINTERNAL with err set when a proof
+       fails.  */
+    int (*certificate)(FILE * out, const _wc_answer * A, wc_error_t err);
+}
+_wc_runner;
+
+/* The rows, indexed by _wc_command; NULL for batch, which is not a
+   request.  */
+extern const _wc_runner * const _wc_runners[_WC_NCOMMANDS];
+
+/* A for R (R must outlive A): only R's command's member initialised.  */
+void _wc_answer_init(_wc_answer * A, const _wc_request * R);
 void _wc_answer_clear(_wc_answer * A);
 
-/* Answer R into A (A freshly initialised; R must outlive A's use).
-   Returns WC_OK, or WC_EINPUT / WC_EINTERNAL with err set as the command
-   line reports it.  A comparison that finds a difference is WC_OK here:
-   _wc_answer_status says WC_EDISAGREE.  */
-int _wc_run(_wc_answer * A, const _wc_request * R, wc_error_t err);
+/* Answer A->R into A (freshly initialised).  Returns WC_OK, or WC_EINPUT
+   / WC_EINTERNAL with err set as the command line reports it.  A
+   comparison that finds a difference, or a certificate that does not
+   hold, is WC_OK here: _wc_answer_status says WC_EDISAGREE.  */
+int _wc_run(_wc_answer * A, wc_error_t err);
 
 /* The status of a computed answer: WC_EDISAGREE for a comparison beyond
-   its tolerance, else WC_OK.  */
+   its tolerance or a certificate that does not hold, else WC_OK.  */
 int _wc_answer_status(const _wc_answer * A);
 
 /* The answer's JSON, exactly as `COMMAND --format=json` prints it (one
    line and its newline).  WC_OK or WC_EINTERNAL on a write error.  */
 int _wc_answer_fprint_json(FILE * out, const _wc_answer * A);
 
+/* The answer in the command line's format (R->format).  */
+int _wc_answer_fprint(FILE * out, const _wc_answer * A);
+
+/* The certificate of the answer (the command's row has one).  */
+int _wc_answer_fprint_certificate(FILE * out, const _wc_answer * A,
+                                  wc_error_t err);
+
 /* cone --all-modes: the cone of every mode that `modes` lists, in its
    order (ASCII-sorted), one `cone --format=json` line each.  R is a cone
    request (its mode unused).  Refuses (WC_EINPUT, nothing written) when
    the problem has more than _WC_ALL_MODES_MAX modes.  */
 #define _WC_ALL_MODES_MAX 10000
+
+/* The cone of A->R->mode for P (A's own problem, or the one --all-modes
+   shares) into A (a cone answer).  */
+int _wc_cone_compute(_wc_answer * A, const wc_problem_t P, wc_error_t err);
 int _wc_cone_all_modes(FILE * out, const _wc_request * R, wc_error_t err);
 
 /* The whole of an input into a malloc'd *text of *len bytes (at most
@@ -186,6 +271,11 @@ int _wc_cone_all_modes(FILE * out, const _wc_request * R, wc_error_t err);
    ...", "file too large (over N bytes)", "read error: ...".  */
 int _wc_input_read(char ** text, size_t * len, const _wc_input * in,
                    wc_error_t err);
+
+/* _wc_input_read with a limit of max bytes of its own (at most
+   _WC_MAX_INPUT_BYTES).  */
+int _wc_input_read_max(char ** text, size_t * len, const _wc_input * in,
+                       size_t max, wc_error_t err);
 
 /* The problem of an input, read (_wc_input_read) and parsed; errors are
    located in in->name.  */

@@ -59,8 +59,10 @@ check_plan(char * msg, size_t size, const _wc_arg ** culprit,
            const _wc_request * R)
 {
     *culprit = _wc_schema_option(_wc_schema + _WC_PLAN, "certificate", 0);
-    if (R->certificate != NULL && R->wrench.given)
-        return SAY("--certificate certifies G_goal, not one wrench: drop "
+    if ((R->certificate != NULL || R->want_certificate) && R->wrench.given)
+        return SAY(R->from_request ? "\"certificate\" certifies G_goal, not "
+                   "one wrench: drop \"wrench\""
+                   : "--certificate certifies G_goal, not one wrench: drop "
                    "FX FY TAU");
     return NULL;
 }
@@ -71,10 +73,14 @@ check_sweep(char * msg, size_t size, const _wc_arg ** culprit,
 {
     *culprit = NULL;
     if (R->friction == NULL && !R->critical)
-        return SAY("sweep needs --friction=LIST or --critical");
+        return SAY(R->from_request ? "a sweep request needs \"friction\" "
+                   "or \"critical\": true"
+                   : "sweep needs --friction=LIST or --critical");
     *culprit = _wc_schema_option(_wc_schema + _WC_SWEEP, "certificate", 0);
-    if (R->certificate != NULL && !R->critical)
-        return SAY("--certificate certifies the bracket of --critical");
+    if ((R->certificate != NULL || R->want_certificate) && !R->critical)
+        return SAY(R->from_request ? "\"certificate\" certifies the bracket "
+                   "of \"critical\""
+                   : "--certificate certifies the bracket of --critical");
     return NULL;
 }
 
@@ -87,13 +93,17 @@ check_draw(char * msg, size_t size, const _wc_arg ** culprit,
 
     *culprit = NULL;
     if (figures == 0)
-        return SAY("draw needs a figure: --mode=M, --modes, --stability, "
+        return SAY(R->from_request ? "a draw request needs a figure: "
+                   "\"mode\", \"modes\", \"stability\", \"plan\", "
+                   "\"sweep\" or \"graph\""
+                   : "draw needs a figure: --mode=M, --modes, --stability, "
                    "--plan, --sweep=LIST or --graph");
     if (figures > 1)
         return SAY("draw takes one figure at a time");
     *culprit = _wc_schema_option(_wc_schema + _WC_DRAW, "wrench", 0);
     if (R->graph_wrench != NULL && !R->fig_graph)
-        return SAY("--wrench goes with --graph only");
+        return SAY(R->from_request ? "\"wrench\" goes with \"graph\" only"
+                   : "--wrench goes with --graph only");
     return NULL;
 }
 
@@ -330,7 +340,7 @@ static const _wc_arg sweep_options[] = {
 };
 
 static const _wc_arg verify_operands[] = {
-    { "cert", _WC_ARG_INPUT, "CERTFILE", NULL, NULL, NULL, 0, 0,
+    { "certfile", _WC_ARG_INPUT, "CERTFILE", NULL, NULL, NULL, 0, 0,
       offsetof(_wc_request, cert), 0, 0,
       NULL,
       NULL },
@@ -402,9 +412,10 @@ static const _wc_arg random_options[] = {
       "use these exact friction coefficients (mu_s, mu_k) at\n"
       "every fixel instead of drawing them",
       NULL },
-    { "format", _WC_ARG_CHOICE, "FMT", "text", "format", NULL, 0, 0,
+    { "format", _WC_ARG_CHOICE, "FMT", "text|json", "format", NULL, 0, 0,
       offsetof(_wc_request, format), _WC_ARG_CLI, 0,
-      "text (default; the .wc file)",
+      "text (default; the .wc file) or json (the file as the\n"
+      "string \"problem_text\", for a request's \"problem_text\")",
       NULL },
     { NULL }
 };
@@ -575,7 +586,7 @@ const _wc_command_schema _wc_schema[] = {
       "G_goal of the insertion plan against the friction coefficient, with\n"
       "mu_s = mu_k = mu at every fixel.  G_goal shrinks as mu grows.",
       NULL,
-      sweep_operands, sweep_options, _WC_CMD_SHARED, check_sweep },
+      sweep_operands, sweep_options, _WC_CMD_SHARED | _WC_CMD_REQUEST, check_sweep },
     { "verify", "verify CERTFILE",
       "re-check a certificate with GMP arithmetic alone",
       "Usage: wrenchcone verify [OPTIONS] CERTFILE",
@@ -594,7 +605,7 @@ const _wc_command_schema _wc_schema[] = {
       "0 when the certificate holds, 4 when it does not, 1 when the file is\n"
       "malformed.",
       NULL,
-      verify_operands, verify_options, _WC_CMD_SHARED, NULL },
+      verify_operands, verify_options, _WC_CMD_SHARED | _WC_CMD_REQUEST, NULL },
     { "compare", "compare PROBLEM MODE FILE",
       "check a cone computed elsewhere (FILE: cdd or JSON,\n"
       "floats allowed) against the exact W(MODE)",
@@ -624,7 +635,7 @@ const _wc_command_schema _wc_schema[] = {
       "on every platform; the first line is a comment naming the command that\n"
       "reproduces it.",
       NULL,
-      random_operands, random_options, 0, NULL },
+      random_operands, random_options, _WC_CMD_REQUEST, NULL },
     { "draw", "draw FIGURE PROBLEM",
       "a figure as SVG: --mode=M, --modes, --stability,\n"
       "--plan, --sweep=LIST or --graph; -o FILE",
@@ -633,7 +644,7 @@ const _wc_command_schema _wc_schema[] = {
       "the fixels with their normals and friction cones, and one of",
       "Every position comes from the exact result, converted to floating point\n"
       "once; the legend and the caption say what is drawn.",
-      draw_operands, draw_options, 0, check_draw },
+      draw_operands, draw_options, _WC_CMD_REQUEST, check_draw },
     { "report", "report PROBLEM -o FILE.html",
       "every analysis of PROBLEM on one HTML page, with\n"
       "its figures",
@@ -645,7 +656,7 @@ const _wc_command_schema _wc_schema[] = {
       "their exact ends (and decimal approximations, marked so), and the command\n"
       "lines that reproduce each part.",
       NULL,
-      report_operands, report_options, 0, NULL },
+      report_operands, report_options, _WC_CMD_REQUEST, NULL },
     { "batch", "batch [FILE]",
       "JSON Lines requests in (cone, modes, feasible,\n"
       "classify, stability, plan, compare), one JSON\n"

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "api/schema.h"
+#include "api/runners.h"
 #include "io/print.h"
 
 static const char program_head[] =
@@ -184,8 +185,11 @@ _wc_schema_fprint_json(FILE * out)
         fprint_str(out, "synopsis", S->synopsis);
         fprint_str(out, "summary", S->summary);
         fprint_str(out, "about", S->about);
-        fprintf(out, ", \"request\": %s, \"operands\": [",
-                S->flags & _WC_CMD_REQUEST ? "true" : "false");
+        fprintf(out, ", \"request\": %s, \"certificate\": %s, "
+                "\"operands\": [", S->flags & _WC_CMD_REQUEST ? "true"
+                : "false", _wc_runners[S - _wc_schema] != NULL
+                && _wc_runners[S - _wc_schema]->certificate != NULL
+                ? "true" : "false");
         for (a = S->operands; a->name != NULL; a++)
         {
             if (a != S->operands)

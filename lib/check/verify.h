@@ -39,6 +39,11 @@ extern "C" {
    more (wrenchcone-certificate(5), LIMITS).  */
 #define WC_CERT_MAX_PLANES 1000
 
+/* The largest certificate file that wrenchcone verify and wrenchcone-verify
+   read (refused before it is parsed): a problem of a million fixels is far
+   below it, and a certificate carries at most two rows per fixel.  */
+#define WC_CERTIFICATE_MAX_BYTES ((size_t) 64 << 20)
+
 /* Check the mode-feasibility certificate text[0..len) (any bytes; a
    strong-stability certificate is bad input here), read from file (the
    name used in error records; may be NULL).  Returns WC_OK and sets

@@ -346,3 +346,59 @@ wc_parse_number_bounded(fmpq_t x, const char * s, size_t len,
     fmpz_clear(den);
     return status;
 }
+
+/* ------------------------------------------------------------------ */
+/* Lists of numbers A,B,C                                              */
+
+int
+wc_parse_number_list(fmpq ** v, slong * count, const char * s, slong max,
+                     const char * why, const char * noun, const char * what,
+                     wc_error_t err)
+{
+    const char * p = s;
+    slong n = 1, i;
+    int status = WC_OK;
+
+    *v = NULL;
+    *count = 0;
+    for (i = 0; s[i] != '\0'; i++)
+        if ((n += s[i] == ',') > max)
+            return wc_error_set(err, WC_EINPUT, what, 1, i + 2,
+                                "at most %ld values%s%s%s", (long) max,
+                                why != NULL ? " (" : "",
+                                why != NULL ? why : "",
+                                why != NULL ? ")" : "");
+    *v = flint_malloc(sizeof(fmpq) * n);
+    for (i = 0; i < n; i++)
+        fmpq_init(*v + i);
+    *count = n;
+    for (i = 0; i < n && status == WC_OK; i++)
+    {
+        const char * e = strchr(p, ',');
+        size_t len = e != NULL ? (size_t) (e - p) : strlen(p);
+
+        if (wc_parse_number_bounded(*v + i, p, len, err) != WC_OK)
+        {
+            char * m = wc_error_format(err);
+
+            status = wc_error_set(err, WC_EINPUT, what, 1, p - s + 1, "%s",
+                                  m != NULL ? m : "bad number");
+            free(m);
+        }
+        else if (noun != NULL && fmpq_sgn(*v + i) < 0)
+            status = wc_error_set(err, WC_EINPUT, what, 1, p - s + 1,
+                                  "%s must not be negative", noun);
+        p += len + 1;
+    }
+    return status;
+}
+
+void
+wc_number_list_clear(fmpq * v, slong n)
+{
+    slong i;
+
+    for (i = 0; i < n; i++)
+        fmpq_clear(v + i);
+    flint_free(v);
+}

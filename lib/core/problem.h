@@ -127,6 +127,17 @@ int wc_parse_number(fmpq_t x, const char * s, size_t len, wc_error_t err);
 int wc_parse_number_bounded(fmpq_t x, const char * s, size_t len,
                             wc_error_t err);
 
+/* A comma-separated list of at most max exact numbers s (each as
+   wc_parse_number_bounded reads it) into *v, flint_malloc'd, of *count
+   (free with wc_number_list_clear, also after a failure).  Errors are
+   located in what ("<friction>") at line 1 and the column of the value;
+   over max: "at most MAX values (why)"; with noun set, a negative value
+   is refused: "NOUN must not be negative".  */
+int wc_parse_number_list(fmpq ** v, slong * count, const char * s,
+                         slong max, const char * why, const char * noun,
+                         const char * what, wc_error_t err);
+void wc_number_list_clear(fmpq * v, slong n);
+
 /* Limits of the problem file reader, so that no command's cost grows
    beyond bounds with the size of the numbers or of the shape (see
    wrenchcone(5)).  The numerator and denominator of every number in a

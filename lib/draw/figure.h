@@ -71,6 +71,13 @@ int _wc_draw_titles(_wc_scene_t S, const wc_problem_t P, const char * title,
 #endif
     ;
 
+/* The HTML page of `wrenchcone report`: every analysis of P with its
+   figures, the command lines naming the problem path.  An analysis P is
+   too large for is named on the page with its limit's message.  Returns
+   WC_OK, or WC_EINTERNAL (err set).  */
+int _wc_report_fprint(FILE * out, const wc_problem_t P, const char * path,
+                      wc_error_t err);
+
 #ifdef __cplusplus
 }
 #endif

@@ -8,7 +8,8 @@ lib_libwc_la_SOURCES += \
 	lib/draw/part.c \
 	lib/draw/figmode.c \
 	lib/draw/figsets.c \
-	lib/draw/figgraph.c
+	lib/draw/figgraph.c \
+	lib/draw/report.c
 noinst_HEADERS += \
 	lib/draw/scene.h \
 	lib/draw/figure.h

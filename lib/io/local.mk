@@ -9,6 +9,8 @@ lib_libwc_la_SOURCES += \
 	lib/io/stabcertprint.c \
 	lib/io/plancertprint.c \
 	lib/io/planprint.c \
+	lib/io/sweepprint.c \
+	lib/io/answerprint.c \
 	lib/io/fconeprint.c \
 	lib/io/compareprint.c
 wciodir = $(pkgincludedir)/io
@@ -19,4 +21,5 @@ wcio_HEADERS = \
 noinst_HEADERS += \
 	lib/io/printutil.h \
 	lib/io/cddwrite.h \
-	lib/io/certprint.h
+	lib/io/certprint.h \
+	lib/io/answerprint.h

@@ -17,6 +17,7 @@
 #include "analysis/kinematics.h"
 #include "core/problem.h"
 #include "analysis/stability.h"
+#include "analysis/sweep.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -110,6 +111,12 @@ int wc_stability_fprint_text(FILE * out, const wc_stability_t S,
    wrong) or on a write error; the output is then incomplete.  */
 int wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
                                     const wc_stability_t S, wc_error_t err);
+
+/* A sweep (wc_sweep's A for P): the plan at each friction value, then
+   the critical bracket when it was asked for; one JSON document and its
+   newline, or text.  */
+int wc_sweep_fprint_json(FILE * out, const wc_sweep_t A, const wc_problem_t P);
+int wc_sweep_fprint_text(FILE * out, const wc_sweep_t A, const wc_problem_t P);
 
 #ifdef __cplusplus
 }

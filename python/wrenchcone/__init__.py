@@ -34,6 +34,7 @@ calls from several threads are serialized here.  See doc/python.md.
 
 import ctypes
 import ctypes.util
+import inspect
 import json
 import numbers
 import os
@@ -41,10 +42,12 @@ import re
 import threading
 from fractions import Fraction
 
+# The commands' functions (cone, modes, ..., report) are made from the
+# library's schema when first used (__getattr__ below): each takes its
+# command's operands in order, then its options as keywords.
 __all__ = [
     "Problem", "Error", "InputError", "UsageError", "InternalError",
-    "cone", "modes", "feasible", "classify", "stability", "plan",
-    "compare", "request", "request_json", "library_path", "exact",
+    "request", "request_json", "library_path", "exact", "schema",
 ]
 
 # The installed library's directory; make install replaces this line
@@ -174,6 +177,9 @@ def _declare(lib):
     lib.wc_request_json.restype = ctypes.c_int
     lib.wc_request_free.argtypes = [ctypes.c_void_p]
     lib.wc_request_free.restype = None
+    lib.wc_request_schema.argtypes = [
+        ctypes.POINTER(ctypes.c_void_p), ctypes.POINTER(ctypes.c_size_t)]
+    lib.wc_request_schema.restype = ctypes.c_int
 
 
 def library_path():
@@ -219,6 +225,7 @@ _LABELS = frozenset((
     "string", "in", "state", "states", "from", "to", "via", "verdict",
     "name", "note", "kind", "relation", "method", "file", "message",
     "reason", "summary", "type", "problem", "arith", "representation",
+    "svg", "html", "problem_text",
 ))
 _RATIONAL = re.compile(r"-?[0-9]+(/[0-9]+)?\Z")
 
@@ -314,72 +321,162 @@ def _wrench(g):
     return [_number(x) for x in g]
 
 
-def _call(command, problem, **keys):
-    req = {"command": command}
-    req.update(_problem(problem))
-    req.update({k: v for k, v in keys.items() if v is not None})
-    return request(req)
-
-
-def cone(problem, mode, method=None, arith=None):
-    """The wrench cone W(mode): the object under "cone" of
-    `wrenchcone cone --format=json` (empty, dim, lineality_dim,
-    inequalities, equalities, rays, lines, faces).  method: "direct"
-    (default) or "paper"; arith: "exact" (default) or "double" (with
-    method="paper"; its numbers are floats).  The trace of the route
-    is beside the cone: request({"command": "cone", ..., "trace": True})
-    returns the whole answer."""
-    return _call("cone", problem, mode=mode, method=method,
-                 arith=arith)["cone"]
-
-
-def modes(problem, witness=False):
-    """Every kinematically feasible mode: {"fixels", "modes", "count"}
-    and with witness=True "witnesses", one twist per mode."""
-    return _call("modes", problem, witness=witness or None)
-
-
-def feasible(problem, mode):
-    """One mode's verdict with its certificate (kind "mode-feasibility")."""
-    return _call("feasible", problem, mode=mode)
-
-
-def classify(problem, wrench, max_modes=None):
-    """One wrench (fx, fy, torque): stability verdicts, the modes whose
-    cone holds it, the motions."""
-    return _call("classify", problem, wrench=_wrench(wrench),
-                 max_modes=max_modes)
-
-
-def stability(problem, bias=None, length=None):
-    """The weakly and strongly stable wrench sets and where a
-    frictionless finger may push; with bias, the largest disturbance it
-    withstands; length: the finger's length."""
-    return _call("stability", problem,
-                 bias=None if bias is None else _wrench(bias),
-                 length=None if length is None else _number(length))
-
-
-def plan(problem, wrench=None, complete=False):
-    """The insertion plan (G_goal and its pieces), or with wrench its
-    verdict; complete=True adds the complete plan."""
-    return _call("plan", problem,
-                 wrench=None if wrench is None else _wrench(wrench),
-                 complete=complete or None)
-
-
-def compare(problem, mode, foreign=None, foreign_text=None, tol=None):
-    """Compare a cone computed elsewhere (a cdd or JSON cone, as a file
-    foreign or as text foreign_text) with the exact W(mode).  A
-    disagreement is the answer (see its verdict), not an exception."""
-    if (foreign is None) == (foreign_text is None):
-        raise TypeError("compare takes foreign or foreign_text, not both")
-    return _call("compare", problem, mode=mode,
-                 foreign=None if foreign is None else os.fspath(foreign),
-                 foreign_text=foreign_text,
-                 tol=None if tol is None else _number_tol(tol))
-
-
 def _number_tol(tol):
     # the tolerance is an angle read with strtod: a decimal
     return tol if isinstance(tol, str) else repr(float(tol))
+
+
+def _numbers(v):
+    # a list of exact numbers, as the command line writes it: A,B,...
+    if isinstance(v, str):
+        return v
+    return ",".join(_number(x) for x in v)
+
+
+# A value of each kind of the schema (wrenchcone --schema) as the
+# request's JSON value.
+_CONVERT = {
+    "flag": bool,
+    "choice": str,
+    "count": int,
+    "seed": int,
+    "number": _number,
+    "numbers": _numbers,
+    "wrench": _wrench,
+    "angle": _number_tol,
+    "string": str,
+}
+
+# What a function returns of its command's answer, when not the whole
+# answer: cone's cone, random's problem, draw's SVG and report's HTML.
+_RESULTS = {
+    "cone": lambda d: d["cone"],
+    "random": lambda d: Problem.from_text(d["problem_text"]),
+    "draw": lambda d: d["svg"],
+    "report": lambda d: d["html"],
+}
+
+_schema_doc = None
+
+
+def schema():
+    """The commands as the library describes them (wrenchcone --schema):
+    {"commands": [{"name", "summary", "about", "request", "certificate",
+    "operands": [...], "options": [...]}]}, each operand and option with
+    its key, kind, metavar, default and help."""
+    global _schema_doc
+    if _schema_doc is None:
+        lib = _load()
+        out = ctypes.c_void_p()
+        outlen = ctypes.c_size_t()
+        with _lock:
+            if lib.wc_request_schema(ctypes.byref(out),
+                                     ctypes.byref(outlen)) != 0:
+                raise InternalError("out of memory")
+            try:
+                text = ctypes.string_at(out.value, outlen.value)
+            finally:
+                lib.wc_request_free(out)
+        _schema_doc = json.loads(text.decode("utf-8"))
+    return _schema_doc
+
+
+def _doc(c):
+    lines = [c["summary"].replace("\n", " ") + ".", "", c["about"], ""]
+    args = [a for a in c["operands"] + c["options"] if a["request"]]
+    if args:
+        lines.append("Arguments (the request's keys; None leaves one out):")
+    for a in args:
+        text = a["key"]
+        if a["kind"] == "input":
+            text += " (a path; or %s_text, the text itself%s)" % (
+                a["key"], "; or a Problem" if a["key"] == "problem" else "")
+        if a.get("values"):
+            text += ": " + " | ".join(a["values"])
+        if a.get("default") is not None:
+            text += " (default %s)" % a["default"]
+        lines.append("  " + text)
+        if a.get("help"):
+            lines.extend("      " + h for h in a["help"].split("\n"))
+    if c["certificate"]:
+        lines.append("  certificate: True adds the certificate document, "
+                     "for wrenchcone verify")
+    return "\n".join(lines)
+
+
+def _make(c):
+    """The function of command c (its schema): operands in order, then
+    the options as keywords."""
+    params, kinds = [], {}
+    # An input may be given as KEY_text instead, so it may be left out
+    # when no required operand follows it.
+    later = False
+    for a in reversed(c["operands"]):
+        may = a["optional"] or (a["kind"] == "input" and not later)
+        later = later or not may
+        params.insert(0, inspect.Parameter(
+            a["key"], inspect.Parameter.POSITIONAL_OR_KEYWORD,
+            default=None if may else inspect.Parameter.empty))
+        kinds[a["key"]] = a["kind"]
+    extra = [a["key"] + "_text" for a in c["operands"] + c["options"]
+             if a["kind"] == "input"]
+    for a in c["options"]:
+        if a["request"]:
+            kinds[a["key"]] = a["kind"]
+    names = [k for k in kinds if k not in {p.name for p in params}]
+    names += extra + (["certificate"] if c["certificate"] else [])
+    for k in names:
+        params.append(inspect.Parameter(
+            k, inspect.Parameter.KEYWORD_ONLY, default=None))
+    sig = inspect.Signature(params)
+    name = c["name"]
+
+    def command(*args, **kwargs):
+        bound = sig.bind(*args, **kwargs)
+        req = {"command": name}
+        for key, value in bound.arguments.items():
+            if value is None or value is False:
+                continue
+            if key == "problem" and isinstance(value, Problem):
+                req.update(value._keys())
+            elif kinds.get(key) == "input":
+                req[key] = os.fspath(value)
+            elif key in kinds:
+                req[key] = _CONVERT[kinds[key]](value)
+            else:       # KEY_text, certificate
+                req[key] = value
+        for a in c["operands"]:
+            if a["kind"] == "input" and not a["optional"] \
+                    and (a["key"] in req) == (a["key"] + "_text" in req):
+                raise TypeError("%s takes %s or %s_text, one of them"
+                                % (name, a["key"], a["key"]))
+        answer = request(req)
+        return _RESULTS.get(name, lambda d: d)(answer)
+
+    command.__name__ = command.__qualname__ = name
+    command.__signature__ = sig
+    command.__doc__ = _doc(c)
+    return command
+
+
+# The commands' functions, made from the schema when first asked for.
+_COMMANDS = {}
+
+
+def __getattr__(name):
+    if name.startswith("_"):
+        raise AttributeError(name)
+    for c in schema()["commands"]:
+        if c["name"] == name and c["request"]:
+            if name not in _COMMANDS:
+                _COMMANDS[name] = _make(c)
+            return _COMMANDS[name]
+    raise AttributeError("module 'wrenchcone' has no attribute %r" % name)
+
+
+def __dir__():
+    try:
+        names = [c["name"] for c in schema()["commands"] if c["request"]]
+    except Error:
+        names = []
+    return sorted(set(globals()) | set(names))

@@ -1,15 +1,15 @@
-/* cmd-report.c -- wrenchcone report: every analysis of a problem on one
-   self-contained HTML page, figures inline.
+/* report.c -- every analysis of a problem on one self-contained HTML
+   page, figures inline (figure.h).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   The page is built whole in memory and written at the end (as draw's
-   figures are).  It is also well-formed XML (XHTML syntax), so that XML
-   tools can read it; it fetches nothing and runs no script.  An
-   analysis the problem is too large for is named, with the limit's
-   message, and the others go on.  */
+   The page is also well-formed XML (XHTML syntax), so that XML tools can
+   read it; it fetches nothing and runs no script.  An analysis the
+   problem is too large for is named, with the limit's message, and the
+   others go on.  Floating point appears only in the decimal
+   approximations and angles the page marks as such.  */
 
 #include <config.h>
 
@@ -17,9 +17,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
-#include "commands.h"
 #include "draw/figure.h"
+#include "draw/scene.h"
+#include "io/print.h"
+#include "analysis/plan.h"
+#include "analysis/stability.h"
+#include "core/version.h"
 
 static const char style[] =
     "body { font-family: sans-serif; max-width: 52em; margin: 1em auto; "
@@ -339,8 +342,9 @@ section_plan(FILE * out, const wc_problem_t P, const char * path,
     return status;
 }
 
-static int
-page(FILE * out, const wc_problem_t P, const char * path, wc_error_t err)
+int
+_wc_report_fprint(FILE * out, const wc_problem_t P, const char * path,
+                  wc_error_t err)
 {
     const char * name = _wc_draw_name(P);
     int status;
@@ -377,63 +381,3 @@ typedef struct
 }
 bytes;
 
-static int
-put_bytes(FILE * f, const void * b)
-{
-    const bytes * p = b;
-
-    return fwrite(p->buf, 1, p->len, f) == p->len ? WC_OK : WC_EINTERNAL;
-}
-
-static int
-run(const cli_command * self, int argc, char ** argv)
-{
-    const char * output, * path;
-    char * buf = NULL;
-    size_t len = 0;
-    _wc_request R;
-    wc_problem_t P;
-    wc_error_t err;
-    FILE * m;
-    int status;
-
-    if ((status = cli_parse(&R, self, argc, argv)) >= 0)
-        return cli_done(&R, status);
-    output = R.output;
-    path = R.problem.stream != NULL ? "-" : R.problem.path;
-    wc_problem_init(P);
-    wc_error_init(err);
-    status = _wc_load_problem(P, &R.problem, err);
-    if (status == WC_OK && (m = open_memstream(&buf, &len)) == NULL)
-        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0, "out of memory");
-    else if (status == WC_OK)
-    {
-        status = page(m, P, path, err);
-        if (fclose(m) != 0 && status == WC_OK)
-            status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                                  "out of memory");
-    }
-    if (status != WC_OK)
-        cli_report(err, status);
-    else if (output != NULL && strcmp(output, "-") != 0)
-    {
-        bytes b = { buf, len };
-
-        status = cli_write_whole(output, "report", put_bytes, &b);
-    }
-    else
-    {
-        fwrite(buf, 1, len, stdout);
-        status = cli_finish_output();
-    }
-    free(buf);
-    wc_error_clear(err);
-    wc_problem_clear(P);
-    return cli_done(&R, status);
-}
-
-int
-cmd_report(const cli_command * self, int argc, char ** argv)
-{
-    return cli_run_with_output(run, self, argc, argv);
-}
