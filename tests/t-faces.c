@@ -1,5 +1,5 @@
 /* t-faces.c -- the certificate checker's moving faces: the same set as the
-   brute-force walk of ref-faces.c, at a cost linear in the fixels.
+   brute-force walk of old-faces.c, at a cost linear in the fixels.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -8,10 +8,10 @@
    1. Hand-made layouts that give the cone of moving directions each of
       its shapes ({0}, a ray, a line, a wedge, a half-plane, a plane, a
       half-space, a wedge times a line, a pointed cone), with many fixels
-      on one face: exact sets, and the same as ref-faces.c.
+      on one face: exact sets, and the same as old-faces.c.
    2. Random problems (tests/testutil.c, degenerate layouts included) and
       wc_random_problem --degenerate, near fixels made touching or not:
-      _wc_check_moving_faces equals ref_moving_faces.
+      _wc_check_moving_faces equals old_moving_faces.
    3. Cost: on 3,000 fixels the walk's count of products stays below a
       linear bound, and wc_verify checks a 3,000-fixel strongly stable
       certificate with no faces under a 20-second CPU limit (the walk
@@ -25,7 +25,7 @@
 #include "wrenchcone.h"
 #include "check/checker.h"
 #include "check/verify.h"
-#include "ref-faces.h"
+#include "old-faces.h"
 #include "testutil.h"
 
 /* ------------------------------------------------------------------ */
@@ -122,7 +122,7 @@ write_problem(const wc_check_problem * C)
     }
 }
 
-/* The set of the fast walk, checked against ref_moving_faces; returned
+/* The set of the fast walk, checked against old_moving_faces; returned
    (the caller clears it).  */
 static wc_check_strings
 compare(const char * what, const wc_check_problem * C)
@@ -136,8 +136,8 @@ compare(const char * what, const wc_check_problem * C)
         write_problem(C);
         wctest_fail("%s: _wc_check_moving_faces failed", what);
     }
-    if (ref_moving_faces(&R, C, J) != WC_OK)
-        wctest_fail("%s: ref_moving_faces failed", what);
+    if (old_moving_faces(&R, C, J) != WC_OK)
+        wctest_fail("%s: old_moving_faces failed", what);
     for (k = 0; k < T.count || k < R.count; k++)
         if (k >= T.count || k >= R.count || strcmp(T.s[k], R.s[k]) != 0)
         {

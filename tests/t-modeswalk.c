@@ -1,6 +1,6 @@
 /* t-modeswalk.c -- the output-sensitive mode walk (lib/analysis/
    modeswalk.c) against the walk of the whole arrangement it replaced
-   (tests/ref-modes.c).
+   (tests/old-modes.c).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -26,7 +26,7 @@
 
 #include "wrenchcone.h"
 #include "analysis/kinematics.h"
-#include "ref-modes.h"
+#include "old-modes.h"
 #include "testutil.h"
 
 static slong checked, total_modes;
@@ -44,7 +44,7 @@ check(const wc_problem_t P, const char * what)
     if (wc_modes_enumerate(M, P, err) != WC_OK)
         wctest_fail_problem(P, NULL, "%s: wc_modes_enumerate failed: %s",
                             what, err->message ? err->message : "?");
-    if (ref_modes_walk(R, P, err) != WC_OK)
+    if (old_modes_walk(R, P, err) != WC_OK)
         wctest_fail_problem(P, NULL, "%s: the reference failed", what);
     if (M->n != R->n || M->count != R->count)
     {

@@ -1,23 +1,24 @@
-/* ref-faces.c -- the moving faces of a problem by the brute-force walk
-   over the whole arrangement of the planes J_in . x = 0, J_it . x = 0 of
-   its touching fixels.
+/* old-faces.c -- the previous implementation of the moving faces of
+   lib/check/faces.c (_wc_check_moving_faces), kept to catch regressions;
+   not an independent reference.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   This is the deliberate independent copy, for the tests only, of the
-   walk that lib/check/faces.c used before it walked only the faces of
-   the cone of moving directions: one point in every cell of the full
-   arrangement (O(t^2) points, each mapped to its string in O(n)), kept
-   so that t-faces can check that the fast walk finds exactly the same
-   set of strings.  Do not make it faster.  */
+   The walk lib/check/faces.c used before it walked only the faces of the
+   cone of moving directions, line for line: one point in every cell of
+   the full arrangement of the planes J_in . x = 0, J_it . x = 0 of the
+   touching fixels (O(t^2) points, each mapped to its string in O(n)),
+   kept so that t-faces can check that the fast walk finds exactly the
+   same set of strings.  The independent reference is ref-faces.c
+   (t-facesref).  Do not make it faster.  */
 
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "ref-faces.h"
+#include "old-faces.h"
 
 /* ------------------------------------------------------------------ */
 /* The set of sign strings.                                            */
@@ -403,7 +404,7 @@ walk_clear(arrangement * A, ray_order * R)
    found in O(t^2 log t) comparisons, each mapped to its string in O(n):
    never the 4^t strings.  */
 int
-ref_moving_faces(wc_check_strings * out, const wc_check_problem * P,
+old_moving_faces(wc_check_strings * out, const wc_check_problem * P,
                        mpq_t * J)
 {
     arrangement A;

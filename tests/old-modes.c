@@ -1,18 +1,21 @@
-/* ref-modes.c -- the test reference for wc_modes_enumerate: the walk over
-   every face of the arrangement of all 2n planes J_k . nu = 0.
+/* old-modes.c -- the previous implementation of mode enumeration
+   (wc_modes_enumerate), kept to catch regressions; not an independent
+   reference.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   This is the deliberate independent copy of the enumeration the library
-   used before it walked only the faces inside the cone of non-penetrating
-   twists (lib/analysis/modeswalk.c): it walks every face of the whole
-   arrangement (exact/arrangement.c), maps each non-penetrating face to its
-   mode, and keeps the witness of the first face of each mode.  O(n^2)
-   faces and memory; kept here to cross-check the output-sensitive walk
-   mode for mode and witness for witness (tests/t-modeswalk.c), and as the
-   "before" of bench/bench-modes.  Do not share code with modeswalk.c.  */
+   The enumeration the library used before it walked only the faces
+   inside the cone of non-penetrating twists (lib/analysis/modeswalk.c),
+   line for line: it walks every face of the whole arrangement with the
+   library's own exact/arrangement.c, maps each non-penetrating face to
+   its mode, and keeps the witness of the first face of each mode.  It
+   shares the arrangement walk and helpers with lib/ (and held a verbatim
+   copy of chamber_witness), so it checks that the faster walk still gives
+   the same modes and the same witnesses (t-modeswalk), and is the
+   "before" of bench/bench-modes; it cannot find an error the two share.
+   The independent reference is ref-modes.c.  */
 
 #include <config.h>
 
@@ -30,7 +33,7 @@
 #include "exact/zvec3set.h"
 #include "exact/arrangement.h"
 #include "analysis/kinematics.h"
-#include "ref-modes.h"
+#include "old-modes.h"
 
 /* v (len entries) := the primitive integer vector on the ray of x.  */
 static void
@@ -405,7 +408,7 @@ modes_sorted(wc_modes_t M, const mode_set * S)
    plane holds at least one line (the two columns of a fixel are never
    parallel).  */
 int
-ref_modes_walk(wc_modes_t M, const wc_problem_t P, wc_error_t err)
+old_modes_walk(wc_modes_t M, const wc_problem_t P, wc_error_t err)
 {
     _wc_arrangement_t R;
     walk W;

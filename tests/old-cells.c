@@ -1,17 +1,18 @@
-/* ref-cells.c -- the cells of an arrangement as wc_cells_build found them
-   before its incremental keys (the reference of t-cellsfast).
+/* old-cells.c -- the previous implementation of wc_cells_build, kept to
+   catch regressions; not an independent reference.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   This is the deliberate independent copy of the former lib/exact/cells.c
-   build: every face's key written and hashed in full (O(m) per face),
-   its own hash table, the chamber multiplier by one division per plane,
-   and a sorted copy of the keys.  It walks the same arrangement
-   (arrangement.c), so t-cellsfast compares the new bookkeeping with the
-   old one; t-cells compares both with sign vectors found without the
-   walk.  Kept as it was; do not "optimise" it.  */
+   The former lib/exact/cells.c build, line for line: every face's key
+   written and hashed in full (O(m) per face), its own hash table, the
+   chamber multiplier by one division per plane, and a sorted copy of the
+   keys.  It walks the same arrangement (lib/exact/arrangement.c) as the
+   library, so t-cellsfast compares the new bookkeeping with the old one
+   and cannot see an error of the walk itself.  The independent
+   reference is ref-cells.c (t-cellsref).  Kept as it was; do not
+   "optimise" it.  */
 
 #include <config.h>
 
@@ -26,7 +27,7 @@
 #include "exact/zvec3set.h"
 #include "exact/arrangement.h"
 #include "exact/cells.h"
-#include "ref-cells.h"
+#include "old-cells.h"
 
 /* Planes with entries below 2^16 give lines below 2^33 and sector points
    below 2^34, and the dot products a chamber's point needs fit a 64-bit
@@ -406,7 +407,7 @@ cells_sorted(wc_cells_t A, fmpz_mat_t H, const cell_list * L)
 }
 
 int
-ref_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
+old_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
 {
     fmpz_mat_t H;
     slong m, p, nrays, nsec = 0, total;
