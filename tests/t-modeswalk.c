@@ -8,13 +8,14 @@
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   On every problem of at most REF_MAX_FIXELS fixels, wc_modes_enumerate
-   must return exactly the modes of ref-modes.c, and each witness must be
-   a primitive integer twist that satisfies its mode (checked by
-   ref_twist_satisfies, from the problem's fields), zero exactly for the
-   mode nu = 0 holds (n on touching fixels, s on near ones); on tiny
-   problems the reference's search is checked against brute force over
-   all strings.  On every problem it must return the very list of the old
+   On every problem wc_modes_enumerate must return exactly the modes of
+   the independent ref-modes.c -- read from the faces of the arrangement
+   (ref_modes_faces), and up to REF_MAX_FIXELS fixels also by its LP
+   search over strings (ref_modes_search), up to 3 by brute force over
+   all strings (ref-kin.c) -- and each witness must be a primitive
+   integer twist that satisfies its mode (ref_twist_satisfies, from the
+   problem's fields), zero exactly for the mode nu = 0 holds (n on
+   touching fixels, s on near ones).  On every problem it must return the very list of the old
    walk, mode for mode and witness for witness (the output of modes
    --witness is byte-identical).  Problems: random problems of 1 to 40 fixels from the library's
    generator (plain and --degenerate, every shape), from the test
@@ -45,35 +46,51 @@
 
 static slong checked, total_modes, ref_checked;
 
-/* M against the independent reference.  */
+/* M's modes are the count strings of ref, by the reference name.  */
+static void
+same_list(const wc_modes_t M, char ** ref, slong count, const char * name,
+          const wc_problem_t P, const char * what)
+{
+    slong i;
+
+    for (i = 0; i < M->count || i < count; i++)
+        if (i >= M->count || i >= count || strcmp(M->modes[i], ref[i]) != 0)
+            wctest_fail_problem(P, NULL, "%s: %ld modes, %s %ld; first "
+                                "difference at %ld: %s, the reference %s",
+                                what, (long) M->count, name, (long) count,
+                                (long) i, i < M->count ? M->modes[i] : "-",
+                                i < count ? ref[i] : "-");
+}
+
+/* M against the independent references: the LP search up to
+   REF_MAX_FIXELS fixels, the faces of the arrangement (ref-cells.c)
+   always, brute force up to 3; every witness.  */
 static void
 check_ref(const wc_modes_t M, const wc_problem_t P, const char * what)
 {
-    char ** ref = NULL, ** all = NULL, * zero;
-    slong count = 0, nall = 0, i, j;
+    char ** ref = NULL, * zero;
+    slong count = 0, i, j;
     fmpz_t c;
 
-    if (P->n > REF_MAX_FIXELS)
-        return;
-    if (ref_modes_search(&ref, &count, NULL, P) != 0)
-        wctest_fail_problem(P, NULL, "%s: ref_modes_search failed", what);
-    for (i = 0; i < M->count || i < count; i++)
-        if (i >= M->count || i >= count || strcmp(M->modes[i], ref[i]) != 0)
-            wctest_fail_problem(P, NULL, "%s: %ld modes, ref-modes.c %ld; "
-                                "first difference at %ld: %s, the "
-                                "reference %s", what, (long) M->count,
-                                (long) count, (long) i,
-                                i < M->count ? M->modes[i] : "-",
-                                i < count ? ref[i] : "-");
+    if (ref_modes_faces(&ref, &count, P) != 0)
+        wctest_fail_problem(P, NULL, "%s: ref_modes_faces failed", what);
+    same_list(M, ref, count, "ref_modes_faces", P, what);
+    ref_modes_free(ref, count);
+    if (P->n <= REF_MAX_FIXELS)
+    {
+        if (ref_modes_search(&ref, &count, NULL, P) != 0)
+            wctest_fail_problem(P, NULL, "%s: ref_modes_search failed",
+                                what);
+        same_list(M, ref, count, "ref_modes_search", P, what);
+        ref_modes_free(ref, count);
+        ref_checked++;
+    }
     if (P->n <= 3)
     {
-        if (ref_modes_bruteforce(&all, &nall, P) != 0)
+        if (ref_modes_bruteforce(&ref, &count, P) != 0)
             wctest_fail_problem(P, NULL, "%s: brute force failed", what);
-        for (i = 0; i < nall || i < count; i++)
-            if (i >= nall || i >= count || strcmp(all[i], ref[i]) != 0)
-                wctest_fail_problem(P, NULL, "%s: ref-modes.c differs from "
-                                    "brute force at %ld", what, (long) i);
-        ref_modes_free(all, nall);
+        same_list(M, ref, count, "brute force", P, what);
+        ref_modes_free(ref, count);
     }
     zero = flint_malloc(P->n + 1);
     for (j = 0; j < P->n; j++)
@@ -96,8 +113,6 @@ check_ref(const wc_modes_t M, const wc_problem_t P, const char * what)
     }
     fmpz_clear(c);
     flint_free(zero);
-    ref_modes_free(ref, count);
-    ref_checked++;
 }
 
 static void
@@ -418,8 +433,8 @@ main(void)
         wc_problem_clear(P);
     }
 
-    printf("t-modeswalk: %ld problems, %ld modes, all equal to the old "
-           "walk; %ld equal to ref-modes.c\n", (long) checked,
+    printf("t-modeswalk: %ld problems, %ld modes, all equal to ref-modes.c "
+           "and to the old walk, %ld also to its LP search\n", (long) checked,
            (long) total_modes, (long) ref_checked);
     flint_cleanup_master();
     return 0;
