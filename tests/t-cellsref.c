@@ -12,7 +12,9 @@
    arrangements first (so that the reference itself is checked), then
    seeded random plane sets with repeated, opposite and multiple rows,
    zero rows, coordinate planes, pencils of planes through one line (all
-   of them, or most) and large entries.  */
+   of them, or most) and large entries, and the planes of J of random
+   problems (coincident fixels, parallel and opposed normals, collinear
+   points, near fixels).  */
 
 #include <config.h>
 
@@ -216,6 +218,57 @@ random_normals(fmpz_mat_t N, slong m)
     }
 }
 
+/* The planes of a random problem's contact velocities: J_in and J_it of
+   every fixel (coincident fixels, parallel and opposed normals,
+   collinear points, normals through one point), cleared to integers.  */
+static void
+problem_normals(fmpz_mat_t N)
+{
+    wc_problem_t P;
+    fmpq w[3], d[2];
+    fmpz_t l;
+    slong i, j, k;
+
+    wc_problem_init(P);
+    wctest_random_problem(P, 1, 12);
+    fmpz_mat_clear(N);
+    fmpz_mat_init(N, 2 * P->n, 3);
+    fmpz_init(l);
+    for (j = 0; j < 3; j++)
+        fmpq_init(w + j);
+    fmpq_init(d + 0);
+    fmpq_init(d + 1);
+    for (i = 0; i < 2 * P->n; i++)
+    {
+        const wc_fixel_struct * f = P->fixels + i / 2;
+
+        fmpq_set(d + 0, f->normal + 0);
+        fmpq_set(d + 1, f->normal + 1);
+        if (i % 2 == 1)         /* the tangent (-n_y, n_x) */
+        {
+            fmpq_neg(d + 0, f->normal + 1);
+            fmpq_set(d + 1, f->normal + 0);
+        }
+        wctest_wrench_of(w, P, f, d);
+        fmpz_one(l);
+        for (k = 0; k < 3; k++)
+            fmpz_lcm(l, l, fmpq_denref(w + k));
+        for (k = 0; k < 3; k++)
+        {
+            fmpz * e = fmpz_mat_entry(N, i, k);
+
+            fmpz_divexact(e, l, fmpq_denref(w + k));
+            fmpz_mul(e, e, fmpq_numref(w + k));
+        }
+    }
+    for (j = 0; j < 3; j++)
+        fmpq_clear(w + j);
+    fmpq_clear(d + 0);
+    fmpq_clear(d + 1);
+    fmpz_clear(l);
+    wc_problem_clear(P);
+}
+
 int
 main(void)
 {
@@ -231,8 +284,12 @@ main(void)
     {
         if (!wctest_iter(it))
             continue;
-        random_normals(N, wctest_randint(0, it % 5 == 0 ? 32 : 12));
-        snprintf(what, sizeof what, "random %ld planes", (long) N->r);
+        if (it % 3 == 2)
+            problem_normals(N);
+        else
+            random_normals(N, wctest_randint(0, it % 5 == 0 ? 32 : 12));
+        snprintf(what, sizeof what, "%s, %ld planes", it % 3 == 2
+                 ? "a random problem's J" : "random", (long) N->r);
         compare(N, NULL, what);
     }
     fmpz_mat_clear(N);
