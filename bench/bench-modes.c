@@ -1,6 +1,6 @@
 /* bench-modes.c -- time wc_modes_enumerate (the faces of the arrangement
    of the planes J_k . nu = 0 inside the non-penetration cone) against the
-   walk of the whole arrangement it replaced (tests/ref-modes.c) and
+   walk of the whole arrangement it replaced (tests/old-modes.c) and
    against brute force over the 4^n mode strings.
 
    Copyright (C) 2026 the wrenchcone authors.
@@ -41,7 +41,7 @@
 #include "analysis/kinematics.h"
 #include "analysis/modeswalk.h"
 #include "ref-kin.h"
-#include "ref-modes.h"
+#include "old-modes.h"
 
 /* Fixel k: t = (k + 1) / (n - k + 1), the circle point
    ((1 - t^2), 2 t) / (1 + t^2), at an angle in (0, pi) increasing with k:
@@ -188,7 +188,7 @@ time_walk(const wc_modes_t M, const wc_problem_t P, double budget)
     wc_error_init(err);
     do
     {
-        if (ref_modes_walk(R, P, err) != WC_OK)
+        if (old_modes_walk(R, P, err) != WC_OK)
         {
             fprintf(stderr, "bench-modes: the whole-arrangement walk "
                     "failed\n");
@@ -265,7 +265,7 @@ main(int argc, char ** argv)
     printf("Kinematically feasible modes of n touching fixels in general "
            "position:\nwc_modes_enumerate (faces inside the non-penetration "
            "cone) vs the walk of the\nwhole arrangement of the 2n planes "
-           "(tests/ref-modes.c) vs brute force (one exact LP per string).\n");
+           "(tests/old-modes.c) vs brute force (one exact LP per string).\n");
     printf("%5s  %6s  %12s  %13s  %8s  %14s  %9s  %s\n", "n", "modes",
            "enumerate ms", "whole walk ms", "walk/enu", "brute force ms",
            "brute/enu", "planes");

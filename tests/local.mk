@@ -8,12 +8,15 @@ tests_libwctest_la_SOURCES = \
 	tests/testutil.c tests/testutil.h \
 	tests/ref-lp.c tests/ref-lp.h \
 	tests/ref-kin.c tests/ref-kin.h \
-	tests/ref-modes.c tests/ref-modes.h \
+	tests/old-modes.c tests/old-modes.h \
 	tests/ref-stab.c tests/ref-stab.h \
 	tests/ref-plan.c tests/ref-plan.h \
-	tests/ref-faces.c tests/ref-faces.h \
+	tests/old-faces.c tests/old-faces.h \
 	tests/ref-hull3.c tests/ref-hull3.h \
-	tests/ref-cells.c tests/ref-cells.h
+	tests/old-cells.c tests/old-cells.h \
+	tests/ref-modes.c tests/ref-modes.h \
+	tests/ref-cells.c tests/ref-cells.h \
+	tests/ref-faces.c tests/ref-faces.h
 
 TEST_LIBS = tests/libwctest.la lib/libwc.la
 C_TESTS = \
@@ -45,6 +48,7 @@ C_TESTS = \
 	tests/t-plansound \
 	tests/t-planbits \
 	tests/t-cellsfast \
+	tests/t-cellsref \
 	tests/t-draw \
 	tests/t-request \
 	tests/t-decimals \

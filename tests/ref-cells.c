@@ -1,456 +1,524 @@
-/* ref-cells.c -- the cells of an arrangement as wc_cells_build found them
-   before its incremental keys (the reference of t-cellsfast).
+/* ref-cells.c -- the independent reference for the cells of a central
+   arrangement of planes in R^3 (wc_cells_build), and through it for the
+   faces that mode enumeration and the moving faces are made of.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   This is the deliberate independent copy of the former lib/exact/cells.c
-   build: every face's key written and hashed in full (O(m) per face),
-   its own hash table, the chamber multiplier by one division per plane,
-   and a sorted copy of the keys.  It walks the same arrangement
-   (arrangement.c), so t-cellsfast compares the new bookkeeping with the
-   old one; t-cells compares both with sign vectors found without the
-   walk.  Kept as it was; do not "optimise" it.  */
+   Independent of lib/: written from cells.h and SPEC.md without reading
+   lib/exact/cells.c or lib/exact/arrangement.c, it uses nothing of the
+   library (FLINT integers only) and no walk around any plane or line.
+   Its method is symbolic perturbation, one dimension at a time:
+
+   - every open ray of the arrangement is +-(h_p x h_q) for two planes
+     that are not parallel: all such pairs are tried;
+   - every open sector lies in one plane p and has a bounding ray u; the
+     points u + e w, w = +-(h_p x u) (in plane p, off the line of u), are
+     in the sectors of plane p beside u for every small e > 0, and their
+     sign for plane j is sign(h_j . u) when that is not zero, else
+     sign(h_j . w): no e is ever chosen;
+   - every open chamber has a sector s on its boundary, in plane p, and
+     s + e h_p, s - e h_p are in the two chambers beside s: their sign
+     for plane j is that of s, or sign(+-h_j . h_p) where s has sign 0.
+   Every sign vector so written is a face's (each is the limit sign of a
+   real point), and every face is reached (the three coordinate planes
+   are added inside, so that every plane meets at least two others in
+   distinct lines, every sector is narrower than a half-plane, and every
+   face is pointed).  Then the sign vectors are cut down to the planes
+   asked for, sorted and made unique; each face's dimension is checked
+   against the rank of its zero planes.  O(m^3) sign entries for m
+   planes.  */
 
 #include <config.h>
 
-#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include <flint/fmpz.h>
+#include <flint/fmpz_mat.h>
 #include <flint/fmpz_vec.h>
 
-#include "exact/vec3.h"
-#include "exact/hash.h"
-#include "exact/zvec3set.h"
-#include "exact/arrangement.h"
-#include "exact/cells.h"
 #include "ref-cells.h"
 
-/* Planes with entries below 2^16 give lines below 2^33 and sector points
-   below 2^34, and the dot products a chamber's point needs fit a 64-bit
-   word (below 3 2^50): then they are done in words.  */
-#define SMALL_BITS 16
-
 /* ---------------------------------------------------------------------
-   The cell list under construction.  Signs are kept as keys: sign + 1
-   in a byte, so that memcmp orders them - < 0 < +.  */
-
-typedef struct
-{
-    slong m;                /* planes */
-    slong cap;              /* cells expected (keys have room for one
-                               more, the candidate) */
-    slong count;
-    unsigned char * key;    /* (cap + 1) x m */
-    uint64_t * hash;        /* cap + 1 */
-    fmpz * pt;              /* (cap + 1) x 3 */
-    slong * dim;            /* cap + 1 */
-    slong size;             /* hash table slots, a power of two */
-    slong * slot;
-}
-cell_list;
+   Integer 3-vectors.  */
 
 static void
-cell_list_init(cell_list * L, slong m, slong cap)
+cross(fmpz * r, const fmpz * a, const fmpz * b)
 {
-    slong i;
-
-    L->m = m;
-    L->cap = cap;
-    L->count = 0;
-    L->key = flint_malloc((cap + 1) * m + 1);
-    L->hash = flint_malloc(sizeof(uint64_t) * (cap + 1));
-    L->pt = _fmpz_vec_init(3 * (cap + 1));
-    L->dim = flint_malloc(sizeof(slong) * (cap + 1));
-    L->size = _wc_hash_size(2 * cap + 2);
-    L->slot = flint_malloc(sizeof(slong) * L->size);
-    for (i = 0; i < L->size; i++)
-        L->slot[i] = -1;
+    fmpz_mul(r + 0, a + 1, b + 2);
+    fmpz_submul(r + 0, a + 2, b + 1);
+    fmpz_mul(r + 1, a + 2, b + 0);
+    fmpz_submul(r + 1, a + 0, b + 2);
+    fmpz_mul(r + 2, a + 0, b + 1);
+    fmpz_submul(r + 2, a + 1, b + 0);
 }
 
-static void
-cell_list_clear(cell_list * L)
+static int
+dot_sgn(const fmpz * a, const fmpz * b)
 {
-    flint_free(L->key);
-    flint_free(L->hash);
-    _fmpz_vec_clear(L->pt, 3 * (L->cap + 1));
-    flint_free(L->dim);
-    flint_free(L->slot);
-}
-
-/* Look the next key (L->key + count m) up: return -1 when it is new (it
-   is then added, with dimension d; its point is to be written to L->pt +
-   3 * index, the index being returned through *at), else the index of
-   the equal cell.  Never called with count > cap.  */
-static slong
-cell_list_add(cell_list * L, slong d, slong * at)
-{
-    slong m = L->m, c = L->count, i;
-    const unsigned char * k = L->key + c * m;
-    uint64_t h = _wc_hash_bytes(k, m);
-
-    for (i = (slong) (h & (L->size - 1)); L->slot[i] >= 0;
-         i = (i + 1) & (L->size - 1))
-    {
-        slong o = L->slot[i];
-
-        if (L->hash[o] == h && memcmp(L->key + o * m, k, m) == 0)
-            return o;
-    }
-    L->slot[i] = c;
-    L->hash[c] = h;
-    L->dim[c] = d;
-    *at = c;
-    L->count++;
-    return -1;
-}
-
-/* ---------------------------------------------------------------------
-   Collecting the cells of the walk.  */
-
-typedef struct
-{
-    cell_list * L;
-    const fmpz_mat_struct * H;
-    slong * h64;            /* H as words when its entries are below
-                               2^SMALL_BITS, else NULL */
-    slong hplane;           /* the plane hh is for */
-    fmpz * hh;              /* h_q . h_p, m entries */
-    slong * hh64;           /* the same in words, with h64 */
-    slong sec;              /* the current sector's cell */
-    int have_k;             /* k is set for it */
-    fmpz_t k;
     fmpz_t t;
-    fmpz_t a;
-}
-collect;
-
-static void
-collect_init(collect * C, cell_list * L, const fmpz_mat_t H)
-{
-    slong m = fmpz_mat_nrows(H), i;
-
-    C->L = L;
-    C->H = H;
-    C->h64 = NULL;
-#if FLINT_BITS == 64
-    C->h64 = flint_malloc(sizeof(slong) * (3 * m + 1));
-    for (i = 0; i < 3 * m && C->h64 != NULL; i++)
-    {
-        const fmpz * x = fmpz_mat_entry(H, i / 3, i % 3);
-
-        if (fmpz_bits(x) > SMALL_BITS)
-        {
-            flint_free(C->h64);
-            C->h64 = NULL;
-        }
-        else
-            C->h64[i] = fmpz_get_si(x);
-    }
-#else
-    (void) i;
-#endif
-    C->hplane = -1;
-    C->hh = _fmpz_vec_init(m + 1);
-    C->hh64 = flint_malloc(sizeof(slong) * (m + 1));
-    C->sec = -1;
-    C->have_k = 0;
-    fmpz_init(C->k);
-    fmpz_init(C->t);
-    fmpz_init(C->a);
-}
-
-static void
-collect_clear(collect * C)
-{
-    flint_free(C->h64);
-    _fmpz_vec_clear(C->hh, C->L->m + 1);
-    flint_free(C->hh64);
-    fmpz_clear(C->k);
-    fmpz_clear(C->t);
-    fmpz_clear(C->a);
-}
-
-/* Check the signs seckey of the sector with point mid on plane p against
-   the dot products there, and set C->k to a multiplier for the points of
-   the chambers beside it: k |h_q . mid| > |h_q . h_p| for every q != p.
-   Returns 0 on a mismatch.  */
-static int
-chamber_multiplier(collect * C, slong p, const fmpz * mid,
-                   const unsigned char * seckey)
-{
-    const slong * h64 = C->h64;
-    slong m = C->L->m, q;
-
-    if (C->hplane != p)
-    {
-        for (q = 0; q < m; q++)
-        {
-            _fmpz_vec_dot(C->hh + q, WC_ROW(C->H, q), WC_ROW(C->H, p), 3);
-            if (h64 != NULL)
-                C->hh64[q] = fmpz_get_si(C->hh + q);
-        }
-        C->hplane = p;
-    }
-    if (h64 != NULL)
-    {
-        slong x = fmpz_get_si(mid), y = fmpz_get_si(mid + 1),
-            z = fmpz_get_si(mid + 2), k = 0;
-
-        for (q = 0; q < m; q++)
-        {
-            slong d = h64[3 * q] * x + h64[3 * q + 1] * y + h64[3 * q + 2] * z;
-            slong e = C->hh64[q];
-
-            if ((d > 0) - (d < 0) + 1 != seckey[q])
-                return 0;
-            if (q == p || e == 0)
-                continue;
-            e = FLINT_ABS(e) / FLINT_ABS(d);
-            if (e > k)
-                k = e;
-        }
-        fmpz_set_si(C->k, k + 1);
-        return 1;
-    }
-    fmpz_zero(C->k);
-    for (q = 0; q < m; q++)
-    {
-        int s = _wc_zvec3_dot_sgn(WC_ROW(C->H, q), mid, C->a);
-
-        if (s + 1 != seckey[q])
-            return 0;
-        if (q == p || fmpz_is_zero(C->hh + q))
-            continue;
-        fmpz_abs(C->a, C->a);
-        fmpz_abs(C->t, C->hh + q);
-        fmpz_fdiv_q(C->t, C->t, C->a);
-        if (fmpz_cmp(C->t, C->k) > 0)
-            fmpz_set(C->k, C->t);
-    }
-    fmpz_add_ui(C->k, C->k, 1);
-    return 1;
-}
-
-/* A chamber's point (see the top of the file), once per sector.  */
-static int
-chamber_point(fmpz * pc, collect * C, const _wc_face_struct * F,
-              wc_error_t err)
-{
-    if (!C->have_k)
-    {
-        if (!chamber_multiplier(C, F->plane, F->point,
-                                C->L->key + C->sec * C->L->m))
-            return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                                "internal error: cells: the signs of a "
-                                "sector are wrong");
-        C->have_k = 1;
-    }
-    _fmpz_vec_scalar_mul_fmpz(pc, F->point, 3, C->k);
-    if (F->side > 0)
-        _fmpz_vec_add(pc, pc, F->normal, 3);
-    else
-        _fmpz_vec_sub(pc, pc, F->normal, 3);
-    _wc_zvec3_primitive(pc, C->t);
-    return WC_OK;
-}
-
-static int
-collect_face(void * data, const _wc_face_struct * F, wc_error_t err)
-{
-    collect * C = data;
-    cell_list * L = C->L;
-    slong m = L->m, q, at, zeros = 0;
-    unsigned char * key;
-
-    if (L->count > L->cap)
-        goto euler;
-    key = L->key + L->count * m;
-    for (q = 0; q < m; q++)
-    {
-        key[q] = (unsigned char) (F->sign[q] + 1);
-        zeros += F->sign[q] == 0;
-    }
-    if (cell_list_add(L, F->dim, &at) >= 0)
-    {
-        if (F->dim == 3)
-            return WC_OK;       /* a chamber met before */
-        return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                            "internal error: cells: two cells of dimension "
-                            "%d with the same signs", F->dim);
-    }
-    if (at >= L->cap)
-        goto euler;
-    if (F->dim == 2)
-    {
-        if (zeros != 1 || F->sign[F->plane] != 0)
-            return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                                "internal error: cells: an arc of plane %ld "
-                                "lies on %ld planes", (long) F->plane,
-                                (long) zeros);
-        C->sec = at;
-        C->have_k = 0;
-    }
-    if (F->dim == 3)
-        return chamber_point(L->pt + 3 * at, C, F, err);
-    _fmpz_vec_set(L->pt + 3 * at, F->point, 3);
-    return WC_OK;
-
-euler:
-    return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                        "internal error: cells: more cells than Euler's "
-                        "relation allows");
-}
-
-static int
-vec_ptr_cmp(const void * p, const void * q)
-{
-    return _wc_zvec3_cmp(*(const fmpz * const *) p, *(const fmpz * const *) q);
-}
-
-/* H := the distinct canonical planes of the nonzero rows of N and the
-   coordinate planes, sorted.  */
-static void
-collect_planes(fmpz_mat_t H, const fmpz_mat_t N)
-{
-    slong n = fmpz_mat_nrows(N), c = 0, m = 0, i;
-    fmpz * v = _fmpz_vec_init(3 * (n + 3));
-    fmpz ** ref = flint_malloc(sizeof(fmpz *) * (n + 3));
-    fmpz_t t;
+    int s;
 
     fmpz_init(t);
-    for (i = 0; i < 3; i++)
-    {
-        fmpz_one(v + 3 * c + i);
-        c++;
-    }
-    for (i = 0; i < n; i++)
-    {
-        _fmpz_vec_set(v + 3 * c, WC_ROW(N, i), 3);
-        if (_wc_zvec3_canonical(v + 3 * c, t))
-            c++;
-    }
-    for (i = 0; i < c; i++)
-        ref[i] = v + 3 * i;
-    qsort(ref, c, sizeof(fmpz *), vec_ptr_cmp);
-    for (i = 0; i < c; i++)
-        if (m == 0 || _wc_zvec3_cmp(ref[m - 1], ref[i]) != 0)
-            ref[m++] = ref[i];
-    fmpz_mat_clear(H);
-    fmpz_mat_init(H, m, 3);
-    for (i = 0; i < m; i++)
-        _fmpz_vec_set(WC_ROW(H, i), ref[i], 3);
+    fmpz_mul(t, a + 0, b + 0);
+    fmpz_addmul(t, a + 1, b + 1);
+    fmpz_addmul(t, a + 2, b + 2);
+    s = fmpz_sgn(t);
     fmpz_clear(t);
-    flint_free(ref);
-    _fmpz_vec_clear(v, 3 * (n + 3));
+    return s;
 }
+
+static int
+is_zero3(const fmpz * a)
+{
+    return fmpz_is_zero(a) && fmpz_is_zero(a + 1) && fmpz_is_zero(a + 2);
+}
+
+/* The rank of the k rows of G listed in idx (3 at most).  */
+static int
+rank_rows(const fmpz_mat_t G, const slong * idx, slong k)
+{
+    fmpz w[3];
+    slong i, a = -1, b = -1;
+    int r = 0;
+
+    for (i = 0; i < 3; i++)
+        fmpz_init(w + i);
+    for (i = 0; i < k && r < 3; i++)
+    {
+        const fmpz * h = G->rows[idx[i]];
+
+        if (is_zero3(h))
+            continue;
+        if (a < 0)
+        {
+            a = idx[i];
+            r = 1;
+            continue;
+        }
+        if (b < 0)
+        {
+            cross(w, G->rows[a], h);
+            if (!is_zero3(w))
+            {
+                b = idx[i];
+                r = 2;
+            }
+            continue;
+        }
+        /* w = h_a x h_b: h is outside their plane iff h . w != 0 */
+        if (dot_sgn(w, h) != 0)
+            r = 3;
+    }
+    for (i = 0; i < 3; i++)
+        fmpz_clear(w + i);
+    return r;
+}
+
+/* ---------------------------------------------------------------------
+   Lists of sign vectors, each with an optional integer 3-vector.  */
 
 typedef struct
 {
-    const unsigned char * key;
-    slong len;
-    slong dim;
-    slong i;
+    slong len;          /* entries of a sign vector */
+    slong count, cap;
+    signed char * sign;
+    fmpz * pt;          /* 3 per vector */
+    slong * dim;
 }
-key_ref;
+flist;
 
-/* Cells by dimension, then by key.  */
-static int
-key_ref_cmp(const void * p, const void * q)
-{
-    const key_ref * a = p, * b = q;
-
-    if (a->dim != b->dim)
-        return a->dim < b->dim ? -1 : 1;
-    return memcmp(a->key, b->key, a->len);
-}
-
-/* A := the cells of L on the planes H (taken), sorted.  */
 static void
-cells_sorted(wc_cells_t A, fmpz_mat_t H, const cell_list * L)
+flist_init(flist * L, slong len)
 {
-    slong m = L->m, total = L->count, i, j;
-    key_ref * ref = flint_malloc(sizeof(key_ref) * (total + 1));
-    signed char * s = malloc(m + 1);
+    L->len = len;
+    L->count = L->cap = 0;
+    L->sign = NULL;
+    L->pt = NULL;
+    L->dim = NULL;
+}
 
-    for (i = 0; i < total; i++)
-    {
-        ref[i].key = L->key + i * m;
-        ref[i].len = m;
-        ref[i].dim = L->dim[i];
-        ref[i].i = i;
-    }
-    qsort(ref, total, sizeof(key_ref), key_ref_cmp);
-    A->nplanes = m;
-    fmpz_mat_swap(A->planes, H);
-    A->count = total;
-    fmpz_mat_clear(A->point);
-    fmpz_mat_init(A->point, total, 3);
-    A->dim = flint_malloc(sizeof(slong) * (total + 1));
-    A->kw = WC_CELLS_KEY_WORDS(m);
-    A->key = malloc(sizeof(uint64_t) * (total * A->kw + 1));
-    for (i = 0; i < total; i++)
-    {
-        slong c = ref[i].i;
+static void
+flist_clear(flist * L)
+{
+    if (L->pt != NULL)
+        _fmpz_vec_clear(L->pt, 3 * L->cap);
+    free(L->sign);
+    free(L->dim);
+    flist_init(L, L->len);
+}
 
-        _fmpz_vec_set(WC_ROW(A->point, i), L->pt + 3 * c, 3);
-        A->dim[i] = L->dim[c];
-        for (j = 0; j < m; j++)
-            s[j] = (signed char) (L->key[c * m + j] - 1);
-        wc_cells_pack(A->key + i * A->kw, s, m);
+/* Room for one more; returns its index, or -1 when out of memory.  */
+static slong
+flist_push(flist * L)
+{
+    if (L->count == L->cap)
+    {
+        slong cap = L->cap < 16 ? 32 : 2 * L->cap, i;
+        signed char * s = realloc(L->sign, (size_t) (cap * (L->len + 1)));
+        slong * d;
+        fmpz * p;
+
+        if (s == NULL)
+            return -1;
+        L->sign = s;
+        d = realloc(L->dim, sizeof(slong) * (size_t) cap);
+        if (d == NULL)
+            return -1;
+        L->dim = d;
+        p = _fmpz_vec_init(3 * cap);
+        for (i = 0; i < 3 * L->count; i++)
+            fmpz_swap(p + i, L->pt + i);
+        if (L->pt != NULL)
+            _fmpz_vec_clear(L->pt, 3 * L->cap);
+        L->pt = p;
+        L->cap = cap;
     }
-    free(s);
-    flint_free(ref);
+    return L->count++;
+}
+
+static signed char *
+flist_sign(const flist * L, slong i)
+{
+    return L->sign + i * (L->len + 1);
+}
+
+static int
+sign_cmp(const signed char * a, const signed char * b, slong len)
+{
+    slong j;
+
+    for (j = 0; j < len; j++)
+        if (a[j] != b[j])
+            return a[j] < b[j] ? -1 : 1;
+    return 0;
+}
+
+/* qsort has no context argument: the list being sorted.  */
+static const flist * sorting;
+
+static int
+index_cmp(const void * p, const void * q)
+{
+    slong i = *(const slong *) p, j = *(const slong *) q;
+    int c;
+
+    if (sorting->dim[i] != sorting->dim[j])
+        return sorting->dim[i] < sorting->dim[j] ? -1 : 1;
+    c = sign_cmp(flist_sign(sorting, i), flist_sign(sorting, j),
+                 sorting->len);
+    if (c != 0)
+        return c;
+    return i < j ? -1 : (i > j);
+}
+
+/* Sort L by (dim, sign vector) and keep the first of equal sign vectors.
+   Returns 0 or -1 (out of memory).  */
+static int
+flist_unique(flist * L)
+{
+    slong * idx, i, k = 0;
+    flist U;
+
+    if (L->count == 0)
+        return 0;
+    idx = malloc(sizeof(slong) * (size_t) L->count);
+    if (idx == NULL)
+        return -1;
+    for (i = 0; i < L->count; i++)
+        idx[i] = i;
+    sorting = L;
+    qsort(idx, (size_t) L->count, sizeof(slong), index_cmp);
+    flist_init(&U, L->len);
+    for (i = 0; i < L->count; i++)
+    {
+        slong a = idx[i], b;
+
+        if (k > 0 && sign_cmp(flist_sign(&U, k - 1), flist_sign(L, a),
+                              L->len) == 0)
+            continue;
+        b = flist_push(&U);
+        if (b < 0)
+        {
+            free(idx);
+            flist_clear(&U);
+            return -1;
+        }
+        memcpy(flist_sign(&U, b), flist_sign(L, a), (size_t) L->len);
+        U.dim[b] = L->dim[a];
+        _fmpz_vec_set(U.pt + 3 * b, L->pt + 3 * a, 3);
+        k++;
+    }
+    free(idx);
+    flist_clear(L);
+    *L = U;
+    return 0;
+}
+
+/* ---------------------------------------------------------------------
+   The enumeration.  */
+
+void
+ref_cells_init(ref_cells_t C)
+{
+    C->m = 0;
+    C->count = 0;
+    C->sign = NULL;
+    C->dim = NULL;
+}
+
+void
+ref_cells_clear(ref_cells_t C)
+{
+    free(C->sign);
+    free(C->dim);
+    ref_cells_init(C);
+}
+
+/* Append to L the vector of signs s_j if nonzero, else side *
+   sign(G_j . d), with dimension dim.  Returns 0 or -1.  */
+static int
+push_perturbed(flist * L, const fmpz_mat_t G, const signed char * s,
+               const fmpz * d, int side, slong dim)
+{
+    slong i = flist_push(L), j;
+    signed char * t;
+
+    if (i < 0)
+        return -1;
+    t = flist_sign(L, i);
+    for (j = 0; j < G->r; j++)
+        t[j] = (signed char) (s != NULL && s[j] != 0 ? s[j]
+                              : side * dot_sgn(G->rows[j], d));
+    L->dim[i] = dim;
+    return 0;
 }
 
 int
-ref_cells_build(wc_cells_t A, const fmpz_mat_t normals, wc_error_t err)
+ref_cells_faces(ref_cells_t C, const fmpz_mat_t H)
 {
-    fmpz_mat_t H;
-    slong m, p, nrays, nsec = 0, total;
-    _wc_arrangement_t R;
-    cell_list L;
-    collect C;
-    int status;
+    slong m = H->r, mt = m + 3, p, q, i, j;
+    fmpz_mat_t G;
+    fmpz u[3], w[3];
+    flist rays, sectors, chambers, all;
+    slong * zero = NULL;
+    int side, status = -1;
 
-    wc_cells_clear(A);
-    if (fmpz_mat_nrows(normals) > 0 && fmpz_mat_ncols(normals) != 3)
-        return wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                            "internal error: cells: normals with %ld "
-                            "columns", (long) fmpz_mat_ncols(normals));
-    fmpz_mat_init(H, 0, 3);
-    collect_planes(H, normals);
-    m = fmpz_mat_nrows(H);
-    status = _wc_arrangement_init(R, H, err);
-    for (p = 0; p < m && status == WC_OK; p++)
+    ref_cells_clear(C);
+    fmpz_mat_init(G, mt, 3);
+    for (i = 0; i < m; i++)
+        for (j = 0; j < 3; j++)
+            fmpz_set(fmpz_mat_entry(G, i, j), fmpz_mat_entry(H, i, j));
+    for (j = 0; j < 3; j++)
+        fmpz_one(fmpz_mat_entry(G, m + j, j));
+    for (i = 0; i < 3; i++)
     {
-        if (_wc_arrangement_nlines_on(R, p) < 2)
-            status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                                  "internal error: cells: plane %ld holds "
-                                  "%ld lines", (long) p,
-                                  (long) _wc_arrangement_nlines_on(R, p));
-        nsec += 2 * _wc_arrangement_nlines_on(R, p);
+        fmpz_init(u + i);
+        fmpz_init(w + i);
     }
-    nrays = 2 * _wc_arrangement_nlines(R);
-    total = 1 + nrays + nsec + (2 - nrays + nsec);  /* Euler, checked */
-    cell_list_init(&L, m, total);
-    collect_init(&C, &L, H);
-    if (status == WC_OK)
-        status = _wc_arrangement_walk(R, collect_face, &C, err);
-    if (status == WC_OK && L.count != total)
-        status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                              "internal error: cells: Euler's relation "
-                              "fails: %ld rays - %ld sectors + %ld chambers "
-                              "!= 2", (long) nrays, (long) nsec,
-                              (long) (L.count - 1 - nrays - nsec));
-    if (status == WC_OK)
-        cells_sorted(A, H, &L);
-    collect_clear(&C);
-    cell_list_clear(&L);
-    _wc_arrangement_clear(R);
-    fmpz_mat_clear(H);
+    flist_init(&rays, mt);
+    flist_init(&sectors, mt);
+    flist_init(&chambers, mt);
+    flist_init(&all, m);
+    zero = malloc(sizeof(slong) * (size_t) mt);
+    if (zero == NULL)
+        goto cleanup;
+
+    /* rays: +-(h_p x h_q) */
+    for (p = 0; p < mt; p++)
+        for (q = p + 1; q < mt; q++)
+        {
+            cross(u, G->rows[p], G->rows[q]);
+            if (is_zero3(u))
+                continue;
+            for (side = 1; side >= -1; side -= 2)
+            {
+                if (push_perturbed(&rays, G, NULL, u, side, 1) != 0)
+                    goto cleanup;
+                _fmpz_vec_scalar_mul_si(rays.pt + 3 * (rays.count - 1),
+                                        u, 3, side);
+            }
+        }
+    if (flist_unique(&rays) != 0)
+        goto cleanup;
+
+    /* sectors: u + e w, w = +-(h_p x u), for every plane p through u */
+    for (i = 0; i < rays.count; i++)
+    {
+        const signed char * s = flist_sign(&rays, i);
+
+        for (p = 0; p < mt; p++)
+        {
+            if (s[p] != 0 || is_zero3(G->rows[p]))
+                continue;
+            cross(w, G->rows[p], rays.pt + 3 * i);
+            for (side = 1; side >= -1; side -= 2)
+                if (push_perturbed(&sectors, G, s, w, side, 2) != 0)
+                    goto cleanup;
+        }
+    }
+    if (flist_unique(&sectors) != 0)
+        goto cleanup;
+
+    /* chambers: s +- e h_p, p a plane holding the sector */
+    for (i = 0; i < sectors.count; i++)
+    {
+        const signed char * s = flist_sign(&sectors, i);
+
+        for (p = 0; p < mt && (s[p] != 0 || is_zero3(G->rows[p])); p++)
+            ;
+        if (p == mt)
+            goto cleanup;   /* a sector on no plane */
+        for (side = 1; side >= -1; side -= 2)
+            if (push_perturbed(&chambers, G, s, G->rows[p], side, 3) != 0)
+                goto cleanup;
+    }
+    if (flist_unique(&chambers) != 0)
+        goto cleanup;
+
+    /* every face, its dimension checked, cut down to the rows of H */
+    {
+        const flist * part[3] = { &rays, &sectors, &chambers };
+        slong k, a;
+
+        a = flist_push(&all);
+        if (a < 0)
+            goto cleanup;
+        memset(flist_sign(&all, a), 0, (size_t) m);
+        all.dim[a] = 0;
+        for (k = 0; k < 3; k++)
+            for (i = 0; i < part[k]->count; i++)
+            {
+                const signed char * s = flist_sign(part[k], i);
+                slong nz = 0;
+
+                for (j = 0; j < mt; j++)
+                    if (s[j] == 0)
+                        zero[nz++] = j;
+                if (3 - rank_rows(G, zero, nz) != part[k]->dim[i])
+                    goto cleanup;
+                nz = 0;
+                for (j = 0; j < m; j++)
+                    if (s[j] == 0)
+                        zero[nz++] = j;
+                a = flist_push(&all);
+                if (a < 0)
+                    goto cleanup;
+                memcpy(flist_sign(&all, a), s, (size_t) m);
+                all.dim[a] = 3 - rank_rows(H, zero, nz);
+            }
+    }
+    if (flist_unique(&all) != 0)
+        goto cleanup;
+
+    C->m = m;
+    C->count = all.count;
+    C->sign = malloc((size_t) (all.count * (m > 0 ? m : 1)));
+    C->dim = malloc(sizeof(slong) * (size_t) all.count);
+    if (C->sign == NULL || C->dim == NULL)
+    {
+        ref_cells_clear(C);
+        goto cleanup;
+    }
+    for (i = 0; i < all.count; i++)
+    {
+        memcpy(C->sign + i * m, flist_sign(&all, i), (size_t) m);
+        C->dim[i] = all.dim[i];
+    }
+    status = 0;
+
+cleanup:
+    free(zero);
+    flist_clear(&rays);
+    flist_clear(&sectors);
+    flist_clear(&chambers);
+    flist_clear(&all);
+    for (i = 0; i < 3; i++)
+    {
+        fmpz_clear(u + i);
+        fmpz_clear(w + i);
+    }
+    fmpz_mat_clear(G);
     return status;
 }
 
+/* ---------------------------------------------------------------------
+   The planes.  */
+
+static int
+row_cmp(const fmpz * a, const fmpz * b)
+{
+    int j, c;
+
+    for (j = 0; j < 3; j++)
+        if ((c = fmpz_cmp(a + j, b + j)) != 0)
+            return c;
+    return 0;
+}
+
+void
+ref_cells_planes(fmpz_mat_t planes, const fmpz_mat_t normals)
+{
+    slong m = normals->r, k = 0, i, j;
+    fmpz_mat_t T;
+    fmpz_t g;
+
+    fmpz_init(g);
+    fmpz_mat_init(T, m + 3, 3);
+    for (i = 0; i < m + 3; i++)
+    {
+        fmpz * t = T->rows[k];
+
+        if (i < m)
+            _fmpz_vec_set(t, normals->rows[i], 3);
+        else
+        {
+            _fmpz_vec_zero(t, 3);
+            fmpz_one(t + (i - m));
+        }
+        if (is_zero3(t))
+            continue;
+        fmpz_gcd(g, t + 0, t + 1);
+        fmpz_gcd(g, g, t + 2);
+        for (j = 0; j < 3; j++)
+            fmpz_divexact(t + j, t + j, g);
+        for (j = 0; j < 3 && fmpz_is_zero(t + j); j++)
+            ;
+        if (fmpz_sgn(t + j) < 0)
+            _fmpz_vec_neg(t, t, 3);
+        k++;
+    }
+    /* insertion sort, dropping repeats: k is small */
+    fmpz_mat_clear(planes);
+    fmpz_mat_init(planes, k, 3);
+    {
+        slong n = 0, a;
+
+        for (i = 0; i < k; i++)
+        {
+            for (a = 0; a < n && row_cmp(planes->rows[a], T->rows[i]) < 0;
+                 a++)
+                ;
+            if (a < n && row_cmp(planes->rows[a], T->rows[i]) == 0)
+                continue;
+            for (j = n; j > a; j--)
+                _fmpz_vec_set(planes->rows[j], planes->rows[j - 1], 3);
+            _fmpz_vec_set(planes->rows[a], T->rows[i], 3);
+            n++;
+        }
+        if (n < k)
+        {
+            fmpz_mat_t S;
+
+            fmpz_mat_init(S, n, 3);
+            for (i = 0; i < n; i++)
+                _fmpz_vec_set(S->rows[i], planes->rows[i], 3);
+            fmpz_mat_swap(S, planes);
+            fmpz_mat_clear(S);
+        }
+    }
+    fmpz_mat_clear(T);
+    fmpz_clear(g);
+}

@@ -1,431 +1,184 @@
-/* ref-faces.c -- the moving faces of a problem by the brute-force walk
-   over the whole arrangement of the planes J_in . x = 0, J_it . x = 0 of
-   its touching fixels.
+/* ref-faces.c -- the independent reference for the moving faces of
+   lib/check/faces.c (_wc_check_moving_faces).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   This is the deliberate independent copy, for the tests only, of the
-   walk that lib/check/faces.c used before it walked only the faces of
-   the cone of moving directions: one point in every cell of the full
-   arrangement (O(t^2) points, each mapped to its string in O(n)), kept
-   so that t-faces can check that the fast walk finds exactly the same
-   set of strings.  Do not make it faster.  */
+   Independent of lib/: written from checker.h and SPEC.md section 2.5
+   without reading lib/check/faces.c, it uses nothing of the library but
+   the wc_check_problem it reads.  J_in = (n, r x n) and J_it = (t, r x t),
+   t = (-n_y, n_x), r = p - com, are computed here (GMP rationals, then
+   cleared to integers by a positive factor, which keeps every sign); the
+   faces of the arrangement of the planes J_in . x = 0, J_it . x = 0 of
+   the touching fixels come from ref-cells.c (symbolic perturbation from
+   the lines of pairs of planes, no walk of the cone of moving directions
+   and no walk around any line), and each face with a_in >= 0 on every
+   touching fixel is read as its string.  Near fixels carry no force and
+   take no part: their letter is u.  */
 
-#include <stdint.h>
+#include <config.h>
+
 #include <stdlib.h>
 #include <string.h>
 
+#include <gmp.h>
+#include <flint/fmpz.h>
+#include <flint/fmpz_mat.h>
+
+#include "ref-cells.h"
 #include "ref-faces.h"
 
-/* ------------------------------------------------------------------ */
-/* The set of sign strings.                                            */
-
-static void
-strings_add(wc_check_strings * T, const char * s, size_t n)
+void
+ref_faces_free(char ** s, size_t count)
 {
-    char * t;
+    size_t i;
 
-    if (T->oom)
+    if (s == NULL)
         return;
-    if (T->count == T->cap)
-    {
-        size_t cap = T->cap < 16 ? 16 : T->cap;
-        char ** u;
+    for (i = 0; i < count; i++)
+        free(s[i]);
+    free(s);
+}
 
-        if (cap > SIZE_MAX / (2 * sizeof(char *)))
-        {
-            T->oom = 1;
-            return;
-        }
-        cap *= 2;
-        u = realloc(T->s, cap * sizeof(char *));
-        if (u == NULL)
-        {
-            T->oom = 1;
-            return;
-        }
-        T->s = u;
-        T->cap = cap;
-    }
-    t = malloc(n + 1);
-    if (t == NULL)
+/* row := a positive multiple of (d, r x d), an integer vector.  */
+static void
+jrow(fmpz * row, const mpq_t rx, const mpq_t ry, const mpq_t dx,
+     const mpq_t dy)
+{
+    mpq_t v[3], t;
+    mpz_t l, z;
+    int j;
+
+    mpq_init(t);
+    mpz_init(l);
+    mpz_init(z);
+    for (j = 0; j < 3; j++)
+        mpq_init(v[j]);
+    mpq_set(v[0], dx);
+    mpq_set(v[1], dy);
+    mpq_mul(v[2], rx, dy);
+    mpq_mul(t, ry, dx);
+    mpq_sub(v[2], v[2], t);
+    mpz_set_ui(l, 1);
+    for (j = 0; j < 3; j++)
+        mpz_lcm(l, l, mpq_denref(v[j]));
+    for (j = 0; j < 3; j++)
     {
-        T->oom = 1;
-        return;
+        mpz_divexact(z, l, mpq_denref(v[j]));
+        mpz_mul(z, z, mpq_numref(v[j]));
+        fmpz_set_mpz(row + j, z);
     }
-    memcpy(t, s, n);
-    t[n] = '\0';
-    T->s[T->count++] = t;
+    for (j = 0; j < 3; j++)
+        mpq_clear(v[j]);
+    mpz_clear(z);
+    mpz_clear(l);
+    mpq_clear(t);
 }
 
 static int
-str_cmp(const void * a, const void * b)
+cmp_str(const void * a, const void * b)
 {
     return strcmp(*(char * const *) a, *(char * const *) b);
 }
 
-/* Sort and drop repeats.  */
-static void
-strings_finish(wc_check_strings * T)
+int
+ref_faces_moving(char *** out, size_t * count, const wc_check_problem * P)
 {
-    size_t k, m = 0;
+    size_t n = P->n, i, t = 0, k, found = 0;
+    size_t * touch = NULL;
+    fmpz_mat_t H;
+    ref_cells_t C;
+    mpq_t rx, ry, tx, ty;
+    char ** list = NULL;
+    char * s = NULL;
+    slong f;
+    int status = -1;
 
-    if (T->count == 0)
-        return;
-    qsort(T->s, T->count, sizeof(char *), str_cmp);
-    for (k = 1; k < T->count; k++)
-        if (strcmp(T->s[k], T->s[m]) == 0)
-            free(T->s[k]);
-        else
-            T->s[++m] = T->s[k];
-    T->count = m + 1;
-}
-
-/* ------------------------------------------------------------------ */
-/* The walk.                                                           */
-
-/* The arrangement of the planes h . x = 0, h = J_in and J_it of the
-   touching fixels, made primitive integer vectors (positive multiples:
-   the signs are those of J_in . x and J_it . x), and the walk's scratch.  */
-typedef struct
-{
-    size_t n;           /* fixels */
-    const int * near;
-    size_t nh;          /* 2 t normals: J_in, J_it of each touching fixel
-                           in order */
-    mpz_t * h;          /* 3 nh */
-    size_t np;          /* distinct planes */
-    size_t * plane;     /* np indices into h */
-    char * buf;         /* n + 1 */
-    mpz_t s, K;         /* scratch */
-    mpz_t * x, * m, * w;        /* 3 each, scratch */
-    wc_check_strings * out;
-}
-arrangement;
-
-/* The rays on one plane, in angular order.  */
-typedef struct
-{
-    size_t max;         /* 2 (nh - 1): both directions of every line */
-    mpz_t * ray;        /* 3 per ray */
-    int * half;         /* 0: angle in [0, pi) from ray 0; 1: [pi, 2 pi) */
-    size_t * idx, * tmp;        /* max each */
-    mpz_t * hp;
-    mpz_t * cr;         /* 3, scratch */
-    mpz_t d;
-}
-ray_order;
-
-/* The sign string of the point x, into A->out when x has a_in >= 0 at
-   every touching fixel and is not n..n.  */
-static void
-candidate(arrangement * A, mpz_t * x)
-{
-    size_t i, k = 0;
-    int moving = 0;
-
-    for (i = 0; i < A->n; i++)
+    *out = NULL;
+    *count = 0;
+    mpq_init(rx);
+    mpq_init(ry);
+    mpq_init(tx);
+    mpq_init(ty);
+    ref_cells_init(C);
+    fmpz_mat_init(H, 0, 3);
+    touch = malloc(sizeof(size_t) * (n + 1));
+    s = malloc(n + 1);
+    if (touch == NULL || s == NULL)
+        goto cleanup;
+    for (i = 0; i < n; i++)
+        if (!P->near[i])
+            touch[t++] = i;
+    fmpz_mat_clear(H);
+    fmpz_mat_init(H, (slong) (2 * t), 3);
+    for (k = 0; k < t; k++)
     {
-        int sa;
+        mpq_t * x = P->fixel + 6 * touch[k];
 
-        if (A->near[i])
+        mpq_sub(rx, x[0], P->body[2]);
+        mpq_sub(ry, x[1], P->body[3]);
+        mpq_neg(tx, x[3]);
+        mpq_set(ty, x[2]);
+        jrow(H->rows[2 * k], rx, ry, x[2], x[3]);
+        jrow(H->rows[2 * k + 1], rx, ry, tx, ty);
+    }
+    if (ref_cells_faces(C, H) != 0)
+        goto cleanup;
+    list = malloc(sizeof(char *) * (size_t) (C->count > 0 ? C->count : 1));
+    if (list == NULL)
+        goto cleanup;
+    for (f = 0; f < C->count; f++)
+    {
+        const signed char * sg = C->sign + f * C->m;
+        int moving = 0, ok = 1;
+
+        for (i = 0; i < n; i++)
+            s[i] = 'u';
+        s[n] = '\0';
+        for (k = 0; k < t && ok; k++)
         {
-            A->buf[i] = 'u';
-            continue;
+            int an = sg[2 * k], at = sg[2 * k + 1];
+
+            if (an < 0)
+                ok = 0;
+            s[touch[k]] = an > 0 ? 's' : at > 0 ? 'l' : at < 0 ? 'r' : 'n';
+            moving |= s[touch[k]] != 'n';
         }
-        _wc_check_zdot3(A->s, A->h + 6 * k, x);
-        sa = mpz_sgn(A->s);
-        if (sa < 0)
-            return;
-        if (sa > 0)
-            A->buf[i] = 's';
+        if (!ok || !moving)
+            continue;
+        list[found] = malloc(n + 1);
+        if (list[found] == NULL)
+            goto cleanup;
+        memcpy(list[found++], s, n + 1);
+    }
+    qsort(list, found, sizeof(char *), cmp_str);
+    /* s with either sign of a_it is one string: keep each once */
+    for (i = 0, k = 0; i < found; i++)
+    {
+        if (k > 0 && strcmp(list[k - 1], list[i]) == 0)
+            free(list[i]);
         else
-        {
-            _wc_check_zdot3(A->s, A->h + 6 * k + 3, x);
-            sa = mpz_sgn(A->s);
-            A->buf[i] = sa > 0 ? 'l' : sa < 0 ? 'r' : 'n';
-        }
-        if (A->buf[i] != 'n')
-            moving = 1;
-        k++;
+            list[k++] = list[i];
     }
-    if (moving)
-        strings_add(A->out, A->buf, A->n);
-}
+    found = k;
+    status = 0;
 
-/* m is a point inside a 2-face (an open sector) of the plane hp: the
-   point and its two neighbours K m +- hp off the plane, where
-   K = 1 + max |h . hp| over the normals h with h . m != 0.  For such h,
-   |h . m| >= 1 (integers), so K |h . m| > |h . hp| and h . (K m +- hp)
-   has the sign of h . m; the normals with h . m = 0 are those of the
-   plane itself (m lies on no other plane), whose sign the shift sets to
-   that of +-h . hp.  Every chamber has a facet on some plane, and that
-   facet is the closure of a 2-face (a plane crossing its relative
-   interior would cut the chamber), so one of the neighbours of that
-   2-face's point lies in the chamber.  */
-static void
-arc_point(arrangement * A, mpz_t * m, mpz_t * hp)
-{
-    mpz_t * x = A->x;
-    size_t q;
-    int j;
-
-    candidate(A, m);
-    mpz_set_ui(A->K, 0);
-    for (q = 0; q < A->nh; q++)
+cleanup:
+    fmpz_mat_clear(H);
+    if (status == 0)
     {
-        _wc_check_zdot3(A->s, A->h + 3 * q, m);
-        if (mpz_sgn(A->s) == 0)
-            continue;
-        _wc_check_zdot3(A->s, A->h + 3 * q, hp);
-        if (mpz_cmpabs(A->s, A->K) > 0)
-            mpz_abs(A->K, A->s);
-    }
-    mpz_add_ui(A->K, A->K, 1);
-    for (j = 0; j < 3; j++)
-    {
-        mpz_mul(x[j], A->K, m[j]);
-        mpz_add(x[j], x[j], hp[j]);
-    }
-    candidate(A, x);
-    for (j = 0; j < 3; j++)
-        mpz_submul_ui(x[j], hp[j], 2);
-    candidate(A, x);
-}
-
-/* < 0 when ray a comes before ray b, 0 when they are the same
-   direction.  */
-static int
-ray_cmp(ray_order * R, size_t a, size_t b)
-{
-    if (R->half[a] != R->half[b])
-        return R->half[a] - R->half[b];
-    /* in one half, a comes first when b is counter-clockwise from a
-       about hp: (a x b) . hp > 0 */
-    _wc_check_zcross3(R->cr, R->ray + 3 * a, R->ray + 3 * b);
-    _wc_check_zdot3(R->d, R->cr, R->hp);
-    return -mpz_sgn(R->d);
-}
-
-/* Merge sort of idx[0..n) by ray_cmp, tmp of n entries.  */
-static void
-sort_rays(ray_order * R, size_t * idx, size_t * tmp, size_t n)
-{
-    size_t h = n / 2, i = 0, j = h, k = 0;
-
-    if (n < 2)
-        return;
-    sort_rays(R, idx, tmp, h);
-    sort_rays(R, idx + h, tmp, n - h);
-    while (i < h && j < n)
-        tmp[k++] = ray_cmp(R, idx[j], idx[i]) < 0 ? idx[j++] : idx[i++];
-    while (i < h)
-        tmp[k++] = idx[i++];
-    while (j < n)
-        tmp[k++] = idx[j++];
-    memcpy(idx, tmp, n * sizeof(size_t));
-}
-
-/* The distinct directions of the lines on plane p (both directions of
-   each) into R->idx[0..*nd), in angular order.  */
-static void
-lines_on_plane(arrangement * A, ray_order * R, size_t p, size_t * nd)
-{
-    mpz_t * hp = A->h + 3 * A->plane[p];
-    size_t q, nr = 0;
-
-    /* the lines on hp, both directions: ray 2 q + 1 = -ray 2 q */
-    for (q = 0; q < A->np; q++)
-    {
-        mpz_t * r = R->ray + 3 * nr;
-
-        if (q == p)
-            continue;
-        _wc_check_zcross3(r, hp, A->h + 3 * A->plane[q]);
-        mpz_neg(r[3], r[0]);
-        mpz_neg(r[4], r[1]);
-        mpz_neg(r[5], r[2]);
-        nr += 2;
-    }
-    *nd = 0;
-    if (nr == 0)
-        return;         /* one plane: never, J_in and J_it differ */
-    /* angles from ray 0 towards w = hp x ray 0 */
-    _wc_check_zcross3(A->w, hp, R->ray);
-    for (q = 0; q < nr; q++)
-    {
-        int sw, su;
-
-        _wc_check_zdot3(A->s, R->ray + 3 * q, A->w);
-        sw = mpz_sgn(A->s);
-        _wc_check_zdot3(A->s, R->ray + 3 * q, R->ray);
-        su = mpz_sgn(A->s);
-        R->half[q] = sw > 0 || (sw == 0 && su > 0) ? 0 : 1;
-        R->idx[q] = q;
-    }
-    R->hp = hp;
-    sort_rays(R, R->idx, R->tmp, nr);
-    *nd = 1;
-    for (q = 1; q < nr; q++)
-        if (ray_cmp(R, R->idx[*nd - 1], R->idx[q]) != 0)
-            R->idx[(*nd)++] = R->idx[q];
-}
-
-/* The cells touching plane p: its rays (1-faces), a point inside each of
-   its sectors (2-faces), and the neighbours of those (3-faces).  */
-static void
-walk_plane(arrangement * A, ray_order * R, size_t p)
-{
-    mpz_t * hp = A->h + 3 * A->plane[p], * m = A->m;
-    size_t q, nd;
-    int i;
-
-    lines_on_plane(A, R, p, &nd);
-    for (q = 0; q < nd; q++)
-        candidate(A, R->ray + 3 * R->idx[q]);
-    if (nd == 2)
-    {
-        /* one line: the two half-planes */
-        _wc_check_zcross3(m, hp, R->ray + 3 * R->idx[0]);
-        arc_point(A, m, hp);
-        for (i = 0; i < 3; i++)
-            mpz_neg(m[i], m[i]);
-        arc_point(A, m, hp);
+        *out = list;
+        *count = found;
     }
     else
-        /* two lines or more: consecutive rays are less than pi apart, so
-           their sum lies inside the sector between them */
-        for (q = 0; q < nd; q++)
-        {
-            mpz_t * a = R->ray + 3 * R->idx[q];
-            mpz_t * b = R->ray + 3 * R->idx[(q + 1) % nd];
-
-            for (i = 0; i < 3; i++)
-                mpz_add(m[i], a[i], b[i]);
-            arc_point(A, m, hp);
-        }
-}
-
-/* The normals of the touching fixels, and the distinct planes among
-   them: normals not parallel to an earlier one.  */
-static void
-arrangement_planes(arrangement * A, mpq_t * J)
-{
-    size_t i, k, p;
-
-    for (i = 0, k = 0; i < A->n; i++)
-        if (!A->near[i])
-        {
-            _wc_check_primitive(A->h + 3 * k, J + 6 * i, A->s);
-            _wc_check_primitive(A->h + 3 * k + 3, J + 6 * i + 3, A->s);
-            k += 2;
-        }
-    for (k = 0; k < A->nh; k++)
-    {
-        for (p = 0; p < A->np; p++)
-        {
-            _wc_check_zcross3(A->x, A->h + 3 * k, A->h + 3 * A->plane[p]);
-            if (mpz_sgn(A->x[0]) == 0 && mpz_sgn(A->x[1]) == 0
-                && mpz_sgn(A->x[2]) == 0)
-                break;
-        }
-        if (p == A->np)
-            A->plane[A->np++] = k;
-    }
-}
-
-/* A and R for the touching fixels of P (at least one).  WC_OK or
-   WC_EINTERNAL; either way walk_clear frees.  */
-static int
-walk_init(arrangement * A, ray_order * R, const wc_check_problem * P,
-          size_t nh, wc_check_strings * out)
-{
-    memset(A, 0, sizeof *A);
-    memset(R, 0, sizeof *R);
-    A->n = P->n;
-    A->near = P->near;
-    A->nh = nh;
-    A->out = out;
-    mpz_init(A->s);
-    mpz_init(A->K);
-    mpz_init(R->d);
-    R->max = 2 * (nh - 1);
-    A->h = _wc_check_zvec_new(_wc_check_times(3, nh));
-    A->plane = _wc_check_alloc(nh, sizeof(size_t));
-    A->buf = malloc(P->n + 1);
-    A->x = _wc_check_zvec_new(3);
-    A->m = _wc_check_zvec_new(3);
-    A->w = _wc_check_zvec_new(3);
-    R->ray = _wc_check_zvec_new(_wc_check_times(3, R->max));
-    R->half = _wc_check_alloc(R->max, sizeof(int));
-    R->idx = _wc_check_alloc(R->max, sizeof(size_t));
-    R->tmp = _wc_check_alloc(R->max, sizeof(size_t));
-    R->cr = _wc_check_zvec_new(3);
-    if (A->h == NULL || A->plane == NULL || A->buf == NULL || A->x == NULL
-        || A->m == NULL || A->w == NULL || R->ray == NULL
-        || R->half == NULL || R->idx == NULL || R->tmp == NULL
-        || R->cr == NULL)
-        return WC_EINTERNAL;
-    return WC_OK;
-}
-
-static void
-walk_clear(arrangement * A, ray_order * R)
-{
-    _wc_check_zvec_free(A->h, 3 * A->nh);
-    free(A->plane);
-    free(A->buf);
-    _wc_check_zvec_free(A->x, 3);
-    _wc_check_zvec_free(A->m, 3);
-    _wc_check_zvec_free(A->w, 3);
-    _wc_check_zvec_free(R->ray, 3 * R->max);
-    free(R->half);
-    free(R->idx);
-    free(R->tmp);
-    _wc_check_zvec_free(R->cr, 3);
-    mpz_clear(A->s);
-    mpz_clear(A->K);
-    mpz_clear(R->d);
-}
-
-/* The strings are constant on the cells of the central arrangement of
-   the touching fixels' planes, and every cell but the origin (whose
-   string is n..n) holds one of these points:
-     - both directions of the line where two planes meet (every 1-face);
-     - on each plane, the sum of two angularly consecutive rays of the
-       lines on it (inside each 2-face), or +- the vector in the plane
-       perpendicular to its one line;
-     - beside each such point, one point on either side of the plane (see
-       arc_point: every 3-face).
-   Coincident planes count once.  With t touching fixels, O(t^2) points
-   found in O(t^2 log t) comparisons, each mapped to its string in O(n):
-   never the 4^t strings.  */
-int
-ref_moving_faces(wc_check_strings * out, const wc_check_problem * P,
-                       mpq_t * J)
-{
-    arrangement A;
-    ray_order R;
-    size_t i, p, nh = 0;
-    int status;
-
-    for (i = 0; i < P->n; i++)
-        if (!P->near[i])
-            nh += 2;
-    if (nh == 0)
-        return WC_OK;
-    status = walk_init(&A, &R, P, nh, out);
-    if (status == WC_OK)
-    {
-        arrangement_planes(&A, J);
-        for (p = 0; p < A.np && !out->oom; p++)
-            walk_plane(&A, &R, p);
-        strings_finish(out);
-        if (out->oom)
-            status = WC_EINTERNAL;
-    }
-    walk_clear(&A, &R);
+        ref_faces_free(list, found);
+    ref_cells_clear(C);
+    free(touch);
+    free(s);
+    mpq_clear(rx);
+    mpq_clear(ry);
+    mpq_clear(tx);
+    mpq_clear(ty);
     return status;
 }

@@ -1,6 +1,6 @@
 /* t-cellsfast.c -- wc_cells_build (incremental keys, Zobrist hashes, the
    chamber multiplier without divisions, signs sorted in place) against
-   the former build kept in ref-cells.c, _wc_angle_cmp against the fmpz
+   the former build kept in old-cells.c, _wc_angle_cmp against the fmpz
    cross product, and the sign bitsets of the plan
    (planbits.c, built a word of cells at a time) against the signs.
 
@@ -30,7 +30,7 @@
 #include "analysis/planparts.h"
 #include "exact/arrangement.h"
 #include "testutil.h"
-#include "ref-cells.h"
+#include "old-cells.h"
 
 static void
 rand_vec(fmpz * v, slong r)
@@ -184,7 +184,7 @@ compare(const fmpz_mat_t N, const char * what)
     wc_cells_init(B);
     wc_error_init(err);
     sa = wc_cells_build(A, N, err);
-    sb = ref_cells_build(B, N, err);
+    sb = old_cells_build(B, N, err);
     if (sa != WC_OK || sb != WC_OK)
         wctest_fail("%s: status %d, the reference %d", what, sa, sb);
     same_cells(A, B, what);
@@ -282,7 +282,7 @@ main(void)
             continue;
         for (style = 0; style < 50; style++)
             check_angle_cmp();
-        /* a few layouts of more than 64 planes (slow in ref-cells.c) */
+        /* a few layouts of more than 64 planes (slow in old-cells.c) */
         style = i % 50 == 7 ? 7 : i % 50 == 8 ? 8 : i % 7;
         if (style == 6)
         {

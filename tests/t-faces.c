@@ -1,5 +1,7 @@
-/* t-faces.c -- the certificate checker's moving faces: the same set as the
-   brute-force walk of ref-faces.c, at a cost linear in the fixels.
+/* t-faces.c -- the certificate checker's moving faces: the same set as
+   the independent reference ref-faces.c (the faces of the arrangement by
+   symbolic perturbation, ref-cells.c) and as the previous brute-force
+   walk old-faces.c (a regression check), at a cost linear in the fixels.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -8,10 +10,12 @@
    1. Hand-made layouts that give the cone of moving directions each of
       its shapes ({0}, a ray, a line, a wedge, a half-plane, a plane, a
       half-space, a wedge times a line, a pointed cone), with many fixels
-      on one face: exact sets, and the same as ref-faces.c.
+      on one face: exact sets, and the same as ref-faces.c and
+      old-faces.c.
    2. Random problems (tests/testutil.c, degenerate layouts included) and
       wc_random_problem --degenerate, near fixels made touching or not:
-      _wc_check_moving_faces equals ref_moving_faces.
+      _wc_check_moving_faces equals ref_faces_moving and
+      old_moving_faces.
    3. Cost: on 3,000 fixels the walk's count of products stays below a
       linear bound, and wc_verify checks a 3,000-fixel strongly stable
       certificate with no faces under a 20-second CPU limit (the walk
@@ -25,6 +29,7 @@
 #include "wrenchcone.h"
 #include "check/checker.h"
 #include "check/verify.h"
+#include "old-faces.h"
 #include "ref-faces.h"
 #include "testutil.h"
 
@@ -122,22 +127,36 @@ write_problem(const wc_check_problem * C)
     }
 }
 
-/* The set of the fast walk, checked against ref_moving_faces; returned
-   (the caller clears it).  */
+/* The set of the fast walk, checked against ref_faces_moving and
+   old_moving_faces; returned (the caller clears it).  */
 static wc_check_strings
 compare(const char * what, const wc_check_problem * C)
 {
     wc_check_strings T = { 0, 0, NULL, 0, 0 }, R = { 0, 0, NULL, 0, 0 };
     mpq_t * J = jacobian(C);
-    size_t k;
+    char ** ind = NULL;
+    size_t k, nind = 0;
 
     if (_wc_check_moving_faces(&T, C, J) != WC_OK)
     {
         write_problem(C);
         wctest_fail("%s: _wc_check_moving_faces failed", what);
     }
-    if (ref_moving_faces(&R, C, J) != WC_OK)
-        wctest_fail("%s: ref_moving_faces failed", what);
+    if (ref_faces_moving(&ind, &nind, C) != 0)
+        wctest_fail("%s: ref_faces_moving failed", what);
+    for (k = 0; k < T.count || k < nind; k++)
+        if (k >= T.count || k >= nind || strcmp(T.s[k], ind[k]) != 0)
+        {
+            write_problem(C);
+            wctest_fail("%s: %lu faces, ref-faces.c %lu; first difference "
+                        "at %lu: %s, the reference %s", what,
+                        (unsigned long) T.count, (unsigned long) nind,
+                        (unsigned long) k, k < T.count ? T.s[k] : "-",
+                        k < nind ? ind[k] : "-");
+        }
+    ref_faces_free(ind, nind);
+    if (old_moving_faces(&R, C, J) != WC_OK)
+        wctest_fail("%s: old_moving_faces failed", what);
     for (k = 0; k < T.count || k < R.count; k++)
         if (k >= T.count || k >= R.count || strcmp(T.s[k], R.s[k]) != 0)
         {
@@ -508,5 +527,6 @@ main(void)
     test_shapes();
     test_random();
     test_cost();
+    flint_cleanup_master();     /* ref-faces.c's integers */
     return 0;
 }

@@ -1,14 +1,23 @@
 /* t-modeswalk.c -- the output-sensitive mode walk (lib/analysis/
-   modeswalk.c) against the walk of the whole arrangement it replaced
-   (tests/ref-modes.c).
+   modeswalk.c) against the independent reference ref-modes.c (a search
+   over mode strings, one exact LP per prefix), and against the walk of
+   the whole arrangement it replaced (tests/old-modes.c, a regression
+   check).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   wc_modes_enumerate must return the very list of the reference, mode for
-   mode and witness for witness (the output of modes --witness is byte-
-   identical), on random problems of 1 to 40 fixels from the library's
+   On every problem wc_modes_enumerate must return exactly the modes of
+   the independent ref-modes.c -- read from the faces of the arrangement
+   (ref_modes_faces), and up to REF_MAX_FIXELS fixels also by its LP
+   search over strings (ref_modes_search), up to 3 by brute force over
+   all strings (ref-kin.c) -- and each witness must be a primitive
+   integer twist that satisfies its mode (ref_twist_satisfies, from the
+   problem's fields), zero exactly for the mode nu = 0 holds (n on
+   touching fixels, s on near ones).  On every problem it must return the very list of the old
+   walk, mode for mode and witness for witness (the output of modes
+   --witness is byte-identical).  Problems: random problems of 1 to 40 fixels from the library's
    generator (plain and --degenerate, every shape), from the test
    generator, and on layouts built here: all fixels near, all touching
    with every normal line through one point (a cradle: the rotation about
@@ -23,13 +32,88 @@
 #include <flint/fmpq.h>
 #include <flint/fmpz.h>
 #include <flint/fmpz_mat.h>
+#include <flint/fmpz_vec.h>
 
 #include "wrenchcone.h"
 #include "analysis/kinematics.h"
+#include "old-modes.h"
+#include "ref-kin.h"
 #include "ref-modes.h"
 #include "testutil.h"
 
-static slong checked, total_modes;
+/* The LP search of ref-modes.c is run up to this many fixels.  */
+#define REF_MAX_FIXELS 6
+
+static slong checked, total_modes, ref_checked;
+
+/* M's modes are the count strings of ref, by the reference name.  */
+static void
+same_list(const wc_modes_t M, char ** ref, slong count, const char * name,
+          const wc_problem_t P, const char * what)
+{
+    slong i;
+
+    for (i = 0; i < M->count || i < count; i++)
+        if (i >= M->count || i >= count || strcmp(M->modes[i], ref[i]) != 0)
+            wctest_fail_problem(P, NULL, "%s: %ld modes, %s %ld; first "
+                                "difference at %ld: %s, the reference %s",
+                                what, (long) M->count, name, (long) count,
+                                (long) i, i < M->count ? M->modes[i] : "-",
+                                i < count ? ref[i] : "-");
+}
+
+/* M against the independent references: the LP search up to
+   REF_MAX_FIXELS fixels, the faces of the arrangement (ref-cells.c)
+   always, brute force up to 3; every witness.  */
+static void
+check_ref(const wc_modes_t M, const wc_problem_t P, const char * what)
+{
+    char ** ref = NULL, * zero;
+    slong count = 0, i, j;
+    fmpz_t c;
+
+    if (ref_modes_faces(&ref, &count, P) != 0)
+        wctest_fail_problem(P, NULL, "%s: ref_modes_faces failed", what);
+    same_list(M, ref, count, "ref_modes_faces", P, what);
+    ref_modes_free(ref, count);
+    if (P->n <= REF_MAX_FIXELS)
+    {
+        if (ref_modes_search(&ref, &count, NULL, P) != 0)
+            wctest_fail_problem(P, NULL, "%s: ref_modes_search failed",
+                                what);
+        same_list(M, ref, count, "ref_modes_search", P, what);
+        ref_modes_free(ref, count);
+        ref_checked++;
+    }
+    if (P->n <= 3)
+    {
+        if (ref_modes_bruteforce(&ref, &count, P) != 0)
+            wctest_fail_problem(P, NULL, "%s: brute force failed", what);
+        same_list(M, ref, count, "brute force", P, what);
+        ref_modes_free(ref, count);
+    }
+    zero = flint_malloc(P->n + 1);
+    for (j = 0; j < P->n; j++)
+        zero[j] = P->fixels[j].state == WC_NEAR ? 's' : 'n';
+    zero[P->n] = '\0';
+    fmpz_init(c);
+    for (i = 0; i < M->count; i++)
+    {
+        const fmpz * w = M->witness->rows[i];
+        int is_zero_mode = strcmp(M->modes[i], zero) == 0;
+
+        _fmpz_vec_content(c, w, 3);
+        if (is_zero_mode ? !fmpz_is_zero(c) : !fmpz_is_one(c))
+            wctest_fail_problem(P, M->modes[i], "%s: the witness of %s is "
+                                "not %s", what, M->modes[i], is_zero_mode
+                                ? "zero" : "a primitive nonzero twist");
+        if (ref_twist_satisfies(P, M->modes[i], w) != 1)
+            wctest_fail_problem(P, M->modes[i], "%s: the witness of %s "
+                                "does not satisfy it", what, M->modes[i]);
+    }
+    fmpz_clear(c);
+    flint_free(zero);
+}
 
 static void
 check(const wc_problem_t P, const char * what)
@@ -44,7 +128,8 @@ check(const wc_problem_t P, const char * what)
     if (wc_modes_enumerate(M, P, err) != WC_OK)
         wctest_fail_problem(P, NULL, "%s: wc_modes_enumerate failed: %s",
                             what, err->message ? err->message : "?");
-    if (ref_modes_walk(R, P, err) != WC_OK)
+    check_ref(M, P, what);
+    if (old_modes_walk(R, P, err) != WC_OK)
         wctest_fail_problem(P, NULL, "%s: the reference failed", what);
     if (M->n != R->n || M->count != R->count)
     {
@@ -273,6 +358,37 @@ library_random(slong i)
     wc_random_options_clear(&opt);
 }
 
+/* SPEC.md section 5: the unit disk touched at (0, -1) and (1, 0) has
+   exactly these feasible modes; the library and ref-modes.c agree on
+   them (check), and they are these.  */
+static void
+test_section5(void)
+{
+    static const char * const want[] = {
+        "ll", "ls", "nn", "ns", "rr", "rs", "sl", "sn", "sr", "ss"
+    };
+    wc_problem_t P;
+    wc_modes_t M;
+    wc_error_t err;
+    slong i;
+
+    wc_problem_init(P);
+    wc_modes_init(M);
+    wc_error_init(err);
+    wctest_fixel_si(P, 0, -1, 0, 1, WC_TOUCHING);
+    wctest_fixel_si(P, 1, 0, -1, 0, WC_TOUCHING);
+    check(P, "section 5");
+    if (wc_modes_enumerate(M, P, err) != WC_OK || M->count != 10)
+        wctest_fail_problem(P, NULL, "section 5: not 10 modes");
+    for (i = 0; i < 10; i++)
+        if (strcmp(M->modes[i], want[i]) != 0)
+            wctest_fail_problem(P, NULL, "section 5: mode %ld is %s, not "
+                                "%s", (long) i, M->modes[i], want[i]);
+    wc_error_clear(err);
+    wc_modes_clear(M);
+    wc_problem_clear(P);
+}
+
 int
 main(void)
 {
@@ -281,6 +397,7 @@ main(void)
 
     wctest_init("t-modeswalk");
     wc_init();
+    test_section5();
 
     iters = wctest_iters(150);
     for (i = 0; i < iters; i++)
@@ -316,8 +433,9 @@ main(void)
         wc_problem_clear(P);
     }
 
-    printf("t-modeswalk: %ld problems, %ld modes, all equal to the "
-           "reference\n", (long) checked, (long) total_modes);
+    printf("t-modeswalk: %ld problems, %ld modes, all equal to ref-modes.c "
+           "and to the old walk, %ld also to its LP search\n", (long) checked,
+           (long) total_modes, (long) ref_checked);
     flint_cleanup_master();
     return 0;
 }
