@@ -6,11 +6,11 @@
    Public License, version 2 or (at your option) any later version.
 
    - _wc_cone_project (small faces tested on their own) against
-     ref_cone_project (every face against every facet): the same |P v|^2
+     old_cone_project (every face against every facet): the same |P v|^2
      and nearest point, exactly;
    - wc_cone_directed_angle (facets found through the 2-D faces, separated
-     cells skipped) against ref_cone_directed_angle (tests/ref-hausdorff.c,
-     the former code): the same distance and witness, to the bit;
+     cells skipped) against old_cone_directed_angle (tests/old-hausdorff.c,
+     the former code, a regression check): the same distance and witness, to the bit;
    - the file lines wc_compare gives to the foreign cone's extreme rays and
      facets and its redundant rows (a binary search among the sorted
      canonical vectors) against a pairwise search done here.
@@ -33,10 +33,10 @@
 #include "exact/vec3.h"
 #include "testutil.h"
 
-int ref_cone_directed_angle(double * dist, double * witness,
+int old_cone_directed_angle(double * dist, double * witness,
                             const wc_cone_t A, const wc_cone_t B,
                             wc_error_t err);
-void ref_cone_project(fmpq_t best, fmpq * q, const fmpq * v,
+void old_cone_project(fmpq_t best, fmpq * q, const fmpq * v,
                       const wc_cone_t C);
 
 /* Random rows into G (r x 3): a layout drawn from a few degenerate ones.  */
@@ -103,7 +103,7 @@ check_project(const wc_cone_t C)
         for (j = 0; j < 3; j++)
             wctest_rand_fmpq(v + j, 5, 3);
         _wc_cone_project(b, q, v, C);
-        ref_cone_project(br, qr, v, C);
+        old_cone_project(br, qr, v, C);
         if (!fmpq_equal(b, br) || !fmpq_equal(q + 0, qr + 0)
             || !fmpq_equal(q + 1, qr + 1) || !fmpq_equal(q + 2, qr + 2))
         {
@@ -135,7 +135,7 @@ check_directed(const wc_cone_t A, const wc_cone_t B)
     wc_error_init(err);
     wc_error_init(errr);
     s = wc_cone_directed_angle(&d, w, A, B, err);
-    sr = ref_cone_directed_angle(&dr, wr, A, B, errr);
+    sr = old_cone_directed_angle(&dr, wr, A, B, errr);
     if (s != sr)
         wctest_fail("directed angle: status %d, reference %d", s, sr);
     if (s == WC_OK)

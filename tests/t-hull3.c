@@ -1,5 +1,5 @@
 /* t-hull3.c -- the O(k log k) 3-D kernel (fan3.c, polar3.c, cone3.c)
-   against the former O(k^2) kernel (ref-hull3.c, an independent copy)
+   against the former O(k^2) kernel (old-hull3.c, kept as a regression check)
    and cddlib.
 
    Copyright (C) 2026 the wrenchcone authors.
@@ -27,7 +27,7 @@
 
 #include "wrenchcone.h"
 #include "testutil.h"
-#include "ref-hull3.h"
+#include "old-hull3.h"
 #include "exact/hull3.h"
 #include "exact/vec3.h"
 #include "exact/zvec3set.h"
@@ -309,7 +309,7 @@ check_one(int layout, slong k, int use_cdd)
     /* V -> H.  */
     if (_wc_hull3_v_to_h(E1, H1, R, L, err) != WC_OK)
         wctest_fail("v_to_h: %s", err->message);
-    ref_hull3_v_to_h(E2, H2, R, L);
+    old_hull3_v_to_h(E2, H2, R, L);
     if (!same_span(E1, E2))
         wctest_fail("v_to_h: equalities differ (%s, k = %ld)",
                     layout_name[layout], (long) k);
@@ -320,14 +320,14 @@ check_one(int layout, slong k, int use_cdd)
        with L as equalities).  */
     if (_wc_hull3_h_to_v(R1, L1, NULL, R, err) != WC_OK)
         wctest_fail("h_to_v: %s", err->message);
-    ref_hull3_h_to_v(R2, L2, NULL, R);
+    old_hull3_h_to_v(R2, L2, NULL, R);
     if (!same_span(L1, L2))
         wctest_fail("h_to_v: lines differ (%s, k = %ld)",
                     layout_name[layout], (long) k);
     same_rows(R1, R2, "h_to_v: rays", layout, k);
     if (_wc_hull3_h_to_v(R1, L1, L, R, err) != WC_OK)
         wctest_fail("h_to_v: %s", err->message);
-    ref_hull3_h_to_v(R2, L2, L, R);
+    old_hull3_h_to_v(R2, L2, L, R);
     if (!same_span(L1, L2))
         wctest_fail("h_to_v with equalities: lines differ (%s, k = %ld)",
                     layout_name[layout], (long) k);

@@ -1,9 +1,13 @@
-/* ref-hausdorff.c -- the reference for tests/t-compare-fast.c: the
-   directed angular distance as lib/float/hausdorff.c computed it before
-   its facet lookup (every facet of B tested against every face) and
-   before the nearest point of a cone tested small faces on their own.
-   This is the deliberate independent copy of that code, kept unchanged
-   but for its names (ref_*), so that the fast paths are checked against
+/* old-hausdorff.c -- the previous implementation, kept to catch
+   regressions; not an independent reference (that is
+   tests/ref-hausdorff.c, written without reading this file or
+   lib/float).
+
+   For tests/t-compare-fast.c: the directed angular distance as
+   lib/float/hausdorff.c computed it before its facet lookup (every facet
+   of B tested against every face) and before the nearest point of a cone
+   tested small faces on their own.  A copy of that code, kept unchanged
+   but for its names (old_*), so that the fast paths are checked against
    the slow ones they replaced.
 
    Copyright (C) 2026 the wrenchcone authors.
@@ -46,10 +50,10 @@
 #include "float/angle.h"
 #include "exact/vec3.h"
 
-int ref_cone_directed_angle(double * dist, double * witness,
+int old_cone_directed_angle(double * dist, double * witness,
                             const wc_cone_t A, const wc_cone_t B,
                             wc_error_t err);
-void ref_cone_project(fmpq_t best, fmpq * q, const fmpq * v,
+void old_cone_project(fmpq_t best, fmpq * q, const fmpq * v,
                       const wc_cone_t C);
 
 /* ------------------------------------------------------------------ */
@@ -57,7 +61,7 @@ void ref_cone_project(fmpq_t best, fmpq * q, const fmpq * v,
    every facet.  */
 
 static int
-ref_in_closure(const wc_cone_t C, const fmpq * p)
+old_in_closure(const wc_cone_t C, const fmpq * p)
 {
     fmpq_t s;
     slong i;
@@ -79,7 +83,7 @@ ref_in_closure(const wc_cone_t C, const fmpq * p)
 }
 
 void
-ref_cone_project(fmpq_t best, fmpq * q, const fmpq * v, const wc_cone_t C)
+old_cone_project(fmpq_t best, fmpq * q, const fmpq * v, const wc_cone_t C)
 {
     fmpq * dir = _fmpq_vec_init(3), * p = _fmpq_vec_init(3);
     fmpq_t n2;
@@ -93,7 +97,7 @@ ref_cone_project(fmpq_t best, fmpq * q, const fmpq * v, const wc_cone_t C)
     {
         r = _wc_face_span(dir, C, C->faces + f);
         _wc_span_project(p, v, r, dir);
-        if (!ref_in_closure(C, p))
+        if (!old_in_closure(C, p))
             continue;
         _wc_qv3_dot(n2, p, p);
         if (fmpq_cmp(n2, best) > 0)
@@ -239,9 +243,9 @@ max_angle_to_plane(double * w, const wc_cone_t K, const fmpq * n)
     fmpq_init(b1);
     fmpq_init(b2);
     fmpq_init(nn);
-    ref_cone_project(b1, q1, n, K);
+    old_cone_project(b1, q1, n, K);
     _wc_qv3_neg(m, n);
-    ref_cone_project(b2, q2, m, K);
+    old_cone_project(b2, q2, m, K);
     if (fmpq_cmp(b2, b1) > 0)
     {
         fmpq_swap(b1, b2);
@@ -582,7 +586,7 @@ cell(wc_cone_t K, const wc_cone_t A, const wc_cone_t B,
 }
 
 int
-ref_cone_directed_angle(double * dist, double * witness, const wc_cone_t A,
+old_cone_directed_angle(double * dist, double * witness, const wc_cone_t A,
                        const wc_cone_t B, wc_error_t err)
 {
     double best = -1, w[3] = { 0, 0, 0 }, x[3];

@@ -1,14 +1,17 @@
-/* ref-hull3.c -- the reference 3-D cone conversion for the tests.
+/* old-hull3.c -- the previous implementation, kept to catch regressions;
+   not an independent reference (that is tests/ref-hull3.c, written
+   without reading this file or lib/exact).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   This is the deliberate independent copy of the library's former 3-D
-   kernel (lib/exact/hull3.c before the O(k log k) fan of fan3.c): O(k^2)
+   This is the library's former 3-D kernel, verbatim but for its names
+   (lib/exact/hull3.c before the O(k log k) fan of fan3.c): O(k^2)
    candidate facets (cross products of pairs of generators), each
    validated against every generator.  It shares no code with the fast
-   kernel and is kept unchanged as the test reference; do not optimise it.
+   kernel but was written by the same hands; kept unchanged as a
+   regression check; do not optimise it.
    It is also the only copy left of the general candidate search: the
    library now converts every 3-D cone near-linearly (fan3.c, polar3.c).
 
@@ -27,13 +30,13 @@
 #include <flint/fmpz_mat.h>
 #include <flint/fmpq_mat.h>
 
-#include "ref-hull3.h"
+#include "old-hull3.h"
 
 #define WC_ROW(A, i) ((A)->rows[i])
 
 /* c := a x b.  */
 static void
-ref_cross(fmpz * c, const fmpz * a, const fmpz * b)
+old_cross(fmpz * c, const fmpz * a, const fmpz * b)
 {
     fmpz_mul(c + 0, a + 1, b + 2);
     fmpz_submul(c + 0, a + 2, b + 1);
@@ -198,9 +201,9 @@ hull(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
                 if (known)
                     continue;
                 if (r == 3)
-                    ref_cross(h, WC_ROW(G, i), WC_ROW(G, j));
+                    old_cross(h, WC_ROW(G, i), WC_ROW(G, j));
                 else
-                    ref_cross(h, e, WC_ROW(G, i));
+                    old_cross(h, e, WC_ROW(G, i));
                 if (_fmpz_vec_is_zero(h, 3))
                     continue;
                 for (sign = 0; sign < 2; sign++, _fmpz_vec_neg(h, h, 3))
@@ -252,7 +255,7 @@ rows_of(const fmpq_mat_t A)
 }
 
 void
-ref_hull3_v_to_h(fmpq_mat_t E, fmpq_mat_t H, const fmpq_mat_t rays,
+old_hull3_v_to_h(fmpq_mat_t E, fmpq_mat_t H, const fmpq_mat_t rays,
                  const fmpq_mat_t lines)
 {
     slong k = 0;
@@ -266,7 +269,7 @@ ref_hull3_v_to_h(fmpq_mat_t E, fmpq_mat_t H, const fmpq_mat_t rays,
 }
 
 void
-ref_hull3_h_to_v(fmpq_mat_t rays, fmpq_mat_t lines, const fmpq_mat_t E,
+old_hull3_h_to_v(fmpq_mat_t rays, fmpq_mat_t lines, const fmpq_mat_t E,
                  const fmpq_mat_t H)
 {
     slong k = 0, r;
@@ -300,7 +303,7 @@ ref_hull3_h_to_v(fmpq_mat_t rays, fmpq_mat_t lines, const fmpq_mat_t E,
 
         fmpz_init(t);
         for (i = 2; i < k && _fmpz_vec_is_zero(u, 3); i += 2)
-            ref_cross(u, WC_ROW(G, 0), WC_ROW(G, i));
+            old_cross(u, WC_ROW(G, 0), WC_ROW(G, i));
         add_rows(G, &k, H, 0);
         for (i = 0; i < k; i++)
         {
