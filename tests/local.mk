@@ -12,6 +12,7 @@ tests_libwctest_la_SOURCES = \
 	tests/ref-stab.c tests/ref-stab.h \
 	tests/ref-plan.c tests/ref-plan.h \
 	tests/ref-faces.c tests/ref-faces.h \
+	tests/ref-hull3.c tests/ref-hull3.h \
 	tests/old-hull3.c tests/old-hull3.h \
 	tests/ref-cells.c tests/ref-cells.h
 

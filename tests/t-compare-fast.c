@@ -10,7 +10,8 @@
      and nearest point, exactly;
    - wc_cone_directed_angle (facets found through the 2-D faces, separated
      cells skipped) against old_cone_directed_angle (tests/old-hausdorff.c,
-     the former code, a regression check): the same distance and witness, to the bit;
+     the former code, a regression check): the same distance and
+     witness, to the bit;
    - the file lines wc_compare gives to the foreign cone's extreme rays and
      facets and its redundant rows (a binary search among the sorted
      canonical vectors) against a pairwise search done here.
