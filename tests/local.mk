@@ -53,8 +53,10 @@ C_TESTS = \
 check_PROGRAMS += $(C_TESTS) tests/corpus-check
 LDADD = $(TEST_LIBS)
 tests_corpus_check_LDADD = lib/libwc.la
-# the former directed distance, kept as a regression check
-tests_t_compare_fast_SOURCES = tests/t-compare-fast.c tests/old-hausdorff.c
+# the former directed distance (a regression check) and an independent
+# reference
+tests_t_compare_fast_SOURCES = tests/t-compare-fast.c tests/old-hausdorff.c \
+	tests/ref-hausdorff.c tests/ref-hausdorff.h
 
 SH_TESTS = \
 	tests/cli-cone.sh \
