@@ -1,7 +1,7 @@
 /* bench-cone.c -- time one mode cone by each route, n = 1 .. 8 fixels
    (the paper's Table 4), the direct route alone up to n = 1000 with its
    growth exponent, and the 3-D conversion alone on k random generators
-   (the O(k log k) fan against the former O(k^2) kernel, tests/ref-hull3.c);
+   (the O(k log k) fan against the former O(k^2) kernel, tests/old-hull3.c);
    last, the direct route with its fast path (lib/analysis/direct3.c)
    against the general direct route alone, n = 1, 2 and 50, in CPU time,
    both answers compared in JSON.
@@ -30,7 +30,7 @@
 #include "benchutil.h"
 #include "exact/hull3.h"
 #include "analysis/direct3.h"
-#include "ref-hull3.h"
+#include "old-hull3.h"
 
 /* Mean seconds per cone.  */
 static double
@@ -101,7 +101,7 @@ time_conversion(const fmpq_mat_t G, int old, double budget, slong * facets)
     do
     {
         if (old)
-            ref_hull3_v_to_h(E, H, G, NULL);
+            old_hull3_v_to_h(E, H, G, NULL);
         else if (_wc_hull3_v_to_h(E, H, G, NULL, err) != WC_OK)
         {
             fprintf(stderr, "bench-cone: %s\n", err->message);

@@ -16,7 +16,9 @@ tests_libwctest_la_SOURCES = \
 	tests/old-cells.c tests/old-cells.h \
 	tests/ref-modes.c tests/ref-modes.h \
 	tests/ref-cells.c tests/ref-cells.h \
-	tests/ref-faces.c tests/ref-faces.h
+	tests/ref-faces.c tests/ref-faces.h \
+	tests/ref-hausdorff.c tests/ref-hausdorff.h \
+	tests/old-hull3.c tests/old-hull3.h
 
 TEST_LIBS = tests/libwctest.la lib/libwc.la
 C_TESTS = \
@@ -56,8 +58,8 @@ C_TESTS = \
 check_PROGRAMS += $(C_TESTS) tests/corpus-check
 LDADD = $(TEST_LIBS)
 tests_corpus_check_LDADD = lib/libwc.la
-# the former directed distance, the reference of t-compare-fast
-tests_t_compare_fast_SOURCES = tests/t-compare-fast.c tests/ref-hausdorff.c
+# the former directed distance, kept as a regression check
+tests_t_compare_fast_SOURCES = tests/t-compare-fast.c tests/old-hausdorff.c
 
 SH_TESTS = \
 	tests/cli-cone.sh \

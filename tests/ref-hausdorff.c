@@ -1,137 +1,83 @@
-/* ref-hausdorff.c -- the reference for tests/t-compare-fast.c: the
-   directed angular distance as lib/float/hausdorff.c computed it before
-   its facet lookup (every facet of B tested against every face) and
-   before the nearest point of a cone tested small faces on their own.
-   This is the deliberate independent copy of that code, kept unchanged
-   but for its names (ref_*), so that the fast paths are checked against
-   the slow ones they replaced.
+/* ref-hausdorff.c -- an independent reference for the directed angular
+   distance sup { angle(x, cl B) : x in cl A, |x| = 1 }.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
    Public License, version 2 or (at your option) any later version.
 
-   The directed distance sup { angle(x, B) : x in A, |x| = 1 } is NOT in
-   general attained at an extreme ray of A, even for pointed cones that
-   are close: for A = pos((1, 1, e), (1, -1, e)) and the wedge
-   B = pos((1, 1, 0), (1, -1, 0)), A's rays are at atan(e / sqrt 2) from
-   B but A's middle (1, 0, e) is at atan(e) (on the sphere the distance
-   to a great-circle arc is not convex; tests/t-compare.c checks this
-   case).  Nor is a vertex rule saved by the facets' normals.  So we split R^3
-   into the cells G + N_G of the normal fan of B (G a face of B, N_G its
-   normal cone): on G + N_G the nearest point of B is the projection onto
-   span G, and the angle to B is the angle to the subspace span G, whose
-   maximum over the polyhedral cone K = A cap (G + N_G) is found exactly:
-   - span G = R^3: 0;
-   - span G a plane with normal n: sin(angle) = |n.x| / |n| |x|, whose
-     maximum over unit x in K is |P_K n| / |n| or |P_K (-n)| / |n|
-     (|P_K n| is the support function of K cap ball at n);
-   - span G a line R r: cos(angle) = |r.x| / |r| |x|; if r.x vanishes at
-     some nonzero x of K the maximum is pi/2, else r.x keeps one sign on K
-     and x -> |r.x| / |x| is quasi-concave there (its superlevel sets are
-     convex circular cones), so its minimum is at a generator of K;
-   - G = {0} (B pointed): K lies in the polar cone B°, every angle is at
-     least pi/2, and the nearest point of B to x is one of B's extreme
-     rays (x.b <= 0 on B, and the same quasi-concavity); the largest
-     min_i angle(x, r_i) over K is found by enumerating the finitely many
-     candidates (see minimax_polar), in doubles.  */
+   Written from lib/float/compare.h (the contract) and SPEC.md only,
+   without reading lib/float or tests/old-hausdorff.c; it reads the two
+   canonical cones' fields and uses nothing else of the library.  A
+   different method from the library's (which splits R^3 into the cells
+   of B's normal fan and maximises exactly on each): global optimisation
+   of f(x) = angle(x, cl B) over cl A on the unit sphere by branch and
+   bound, in doubles.
+
+   f at one point, brute force: the nearest point of cl B to x is the
+   projection of x onto the span of the face holding it in its relative
+   interior, spanned by the lines and at most two extreme rays; every
+   such projection that is a nonnegative combination lies in cl B, so
+   the smallest angle over them, over x itself when x is in cl B and over
+   the rays and +-lines (the nearest directions when x is in the polar
+   cone) is f(x).
+
+   The domain: cl A on the sphere cut into spherical triangles (the eight
+   octants clipped by A's facets, fan-triangulated; for a plane, its four
+   quarter circles clipped; for a ray or line, its points).  On a piece S
+   with unit vertices v_i and centre c, sup f is bounded above by the
+   least of
+   - f(c) + max angle(c, v_i): f is 1-Lipschitz on the sphere;
+   - asin(max d_B(v_i) / rho), rho = min v_i . c <= |x| on the flat
+     simplex: d_B (Euclidean distance to cl B) is convex and homogeneous,
+     and sin f = d_B on unit vectors below pi/2;
+   - acos(m or m / rho), m = min v_i . b with b the nearest unit vector of
+     cl B to c: cos f(y) = max over unit b of y . b is at least y . b.
+   The first is tight near peaks, the other two to second order near
+   smooth maxima and where f is near 0.  Pieces are refined best-first
+   until the largest bound is within tol of the best value found.  */
 
 #include <config.h>
 
 #include <math.h>
-#include <string.h>
+#include <stdlib.h>
 
-#include <flint/fmpq_vec.h>
+#include "ref-hausdorff.h"
 
-#include "float/compare.h"
-#include "float/angle.h"
-#include "exact/vec3.h"
+#define SLACK 1e-12             /* rounding allowance of every bound */
 
-int ref_cone_directed_angle(double * dist, double * witness,
-                            const wc_cone_t A, const wc_cone_t B,
-                            wc_error_t err);
-void ref_cone_project(fmpq_t best, fmpq * q, const fmpq * v,
-                      const wc_cone_t C);
-
-/* ------------------------------------------------------------------ */
-/* The nearest point of a cone: every face's projection tested against
-   every facet.  */
-
-static int
-ref_in_closure(const wc_cone_t C, const fmpq * p)
+typedef struct
 {
-    fmpq_t s;
-    slong i;
-    int in = 1;
-
-    fmpq_init(s);
-    for (i = 0; in && i < fmpz_mat_nrows(C->ineqs); i++)
-    {
-        _wc_zqvec3_dot(s, WC_ROW(C->ineqs, i), p);
-        in = fmpq_sgn(s) <= 0;
-    }
-    for (i = 0; in && i < fmpz_mat_nrows(C->eqs); i++)
-    {
-        _wc_zqvec3_dot(s, WC_ROW(C->eqs, i), p);
-        in = fmpq_is_zero(s);
-    }
-    fmpq_clear(s);
-    return in;
+    slong nr, nl, nh, ne;
+    double * r, * l, * h, * e;  /* unit vectors, 3 doubles each */
 }
-
-void
-ref_cone_project(fmpq_t best, fmpq * q, const fmpq * v, const wc_cone_t C)
-{
-    fmpq * dir = _fmpq_vec_init(3), * p = _fmpq_vec_init(3);
-    fmpq_t n2;
-    slong f, r;
-
-    fmpq_init(n2);
-    fmpq_zero(best);
-    if (q != NULL)
-        _wc_qv3_zero(q);
-    for (f = 0; f < C->nfaces; f++)
-    {
-        r = _wc_face_span(dir, C, C->faces + f);
-        _wc_span_project(p, v, r, dir);
-        if (!ref_in_closure(C, p))
-            continue;
-        _wc_qv3_dot(n2, p, p);
-        if (fmpq_cmp(n2, best) > 0)
-        {
-            fmpq_set(best, n2);
-            if (q != NULL)
-                _wc_qv3_set(q, p);
-        }
-    }
-    fmpq_clear(n2);
-    _fmpq_vec_clear(dir, 3);
-    _fmpq_vec_clear(p, 3);
-}
-
-/* ------------------------------------------------------------------ */
-/* Unit vectors in doubles, for the candidates of minimax_polar.  */
+dcone;
 
 static double
-ddot(const double * a, const double * b)
+dot(const double * a, const double * b)
 {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 static void
-dcross(double * c, const double * a, const double * b)
+cross(double * c, const double * a, const double * b)
 {
     c[0] = a[1] * b[2] - a[2] * b[1];
     c[1] = a[2] * b[0] - a[0] * b[2];
     c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-/* Normalise a in place; 0 when it is (numerically) zero.  */
-static int
-dnormalize(double * a)
+static double
+norm(const double * a)
 {
-    double n = sqrt(ddot(a, a));
+    return sqrt(dot(a, a));
+}
 
-    if (!(n > 1e-300))
+static int
+unit(double * a)
+{
+    double n = norm(a);
+
+    if (!(n > 0))
         return 0;
     a[0] /= n;
     a[1] /= n;
@@ -139,525 +85,497 @@ dnormalize(double * a)
     return 1;
 }
 
-/* The angle between a and b (atan2 of |a x b| and a.b: accurate near 0
-   and pi, where acos is not).  */
 static double
-dangle(const double * a, const double * b)
+angle(const double * a, const double * b)
 {
     double c[3];
 
-    dcross(c, a, b);
-    return atan2(sqrt(ddot(c, c)), ddot(a, b));
+    cross(c, a, b);
+    return atan2(norm(c), dot(a, b));
 }
 
-/* ------------------------------------------------------------------ */
-/* The largest angle from a cell to a face's span.  */
-
-/* The largest angle from a unit x of cl K (nonzero) to the line R r.  */
-static double
-max_angle_to_line(double * w, const wc_cone_t K, const fmpq * r)
+/* The rows of M as unit doubles; orthonormalised when ortho.  */
+static double *
+rows_of(slong * n, const fmpz_mat_t M, int ortho)
 {
-    fmpq_mat_t G;
-    fmpq * x = _fmpq_vec_init(3);
-    fmpq_t s, t;
-    int * sg;
-    slong n, i, j;
-    double best = -1;
+    slong i, j, k;
+    double * v = malloc(sizeof(double) * 3 * (fmpz_mat_nrows(M) + 1));
 
-    _wc_cone_generators(G, K);
-    n = fmpq_mat_nrows(G);
-    sg = flint_malloc(sizeof(int) * (n + 1));
-    fmpq_init(s);
-    fmpq_init(t);
-    for (i = 0; i < n; i++)
+    *n = 0;
+    for (i = 0; i < fmpz_mat_nrows(M); i++)
     {
-        _wc_qv3_dot(s, r, WC_ROW(G, i));
-        sg[i] = fmpq_sgn(s);
-        if (sg[i] == 0)
-        {
-            _wc_qv3_unit_d(w, WC_ROW(G, i));
-            best = WC_PI / 2;
-            goto cleanup;
-        }
-    }
-    /* r.x changes sign on K: for generators g, h with r.g > 0 > r.h,
-       x = (r.g) h - (r.h) g is in K and has r.x = 0 -- nonzero unless g
-       and h are opposite (when K is a single line, all such x are 0).  */
-    for (i = 0; i < n; i++)
-        for (j = 0; j < n; j++)
-        {
-            slong c;
+        double * x = v + 3 * *n;
 
-            if (sg[i] <= 0 || sg[j] >= 0)
+        for (j = 0; j < 3; j++)
+            x[j] = fmpz_get_d(fmpz_mat_entry(M, i, j));
+        for (k = 0; ortho && k < *n; k++)
+        {
+            double t = dot(x, v + 3 * k);
+
+            for (j = 0; j < 3; j++)
+                x[j] -= t * v[3 * k + j];
+        }
+        if (unit(x))
+            (*n)++;
+    }
+    return v;
+}
+
+static void
+dcone_init(dcone * D, const wc_cone_t C)
+{
+    D->r = rows_of(&D->nr, C->rays, 0);
+    D->l = rows_of(&D->nl, C->lines, 1);
+    D->h = rows_of(&D->nh, C->ineqs, 0);
+    D->e = rows_of(&D->ne, C->eqs, 0);
+}
+
+static void
+dcone_clear(dcone * D)
+{
+    free(D->r);
+    free(D->l);
+    free(D->h);
+    free(D->e);
+}
+
+/* Keep p (a point of cl B) when it is nearer to x than the best so far.  */
+static void
+consider(double * best, double * near, const double * x, const double * p)
+{
+    double a, n = norm(p);
+
+    if (!(n > 1e-300))
+        return;
+    a = angle(x, p);
+    if (a < *best)
+    {
+        *best = a;
+        near[0] = p[0] / n;
+        near[1] = p[1] / n;
+        near[2] = p[2] / n;
+    }
+}
+
+static double
+dangle_to(double * near, const double * x, const dcone * B)
+{
+    double best = INFINITY, xl[3] = { 0, 0, 0 }, xp[3], p[3], nb[3];
+    slong i, j, k;
+    int in = 1;
+
+    if (near == NULL)
+        near = nb;
+    for (i = 0; i < B->nl; i++)
+    {
+        double t = dot(x, B->l + 3 * i), m[3];
+
+        for (k = 0; k < 3; k++)
+        {
+            xl[k] += t * B->l[3 * i + k];
+            m[k] = -B->l[3 * i + k];
+        }
+        consider(&best, near, x, B->l + 3 * i);
+        consider(&best, near, x, m);
+    }
+    for (k = 0; k < 3; k++)
+        xp[k] = x[k] - xl[k];
+    consider(&best, near, x, xl);
+    for (i = 0; i < B->nh; i++)
+        in = in && dot(B->h + 3 * i, x) <= 1e-15;
+    for (i = 0; i < B->ne; i++)
+        in = in && fabs(dot(B->e + 3 * i, x)) <= 1e-15;
+    if (in && (B->nr > 0 || B->nl > 0))
+        consider(&best, near, x, x);
+    for (i = 0; i < B->nr; i++)
+    {
+        const double * r = B->r + 3 * i;
+        double t = dot(xp, r);
+
+        consider(&best, near, x, r);
+        if (t > 0)
+        {
+            for (k = 0; k < 3; k++)
+                p[k] = xl[k] + t * r[k];
+            consider(&best, near, x, p);
+        }
+        for (j = i + 1; j < B->nr; j++)
+        {
+            const double * s = B->r + 3 * j;
+            double g = dot(r, s), det = 1 - g * g, b1 = t, b2 = dot(xp, s);
+            double a1, a2;
+
+            if (det < 1e-12)
                 continue;
-            _wc_qv3_dot(s, r, WC_ROW(G, i));
-            _wc_qv3_dot(t, r, WC_ROW(G, j));
-            for (c = 0; c < 3; c++)
-            {
-                fmpq_mul(x + c, s, fmpq_mat_entry(G, j, c));
-                fmpq_submul(x + c, t, fmpq_mat_entry(G, i, c));
-            }
-            if (!_wc_qv3_is_zero(x))
-            {
-                _wc_qv3_unit_d(w, x);
-                best = WC_PI / 2;
-                goto cleanup;
-            }
-        }
-    for (i = 0; i < n; i++)
-    {
-        double a = wc_angle_vectors(WC_ROW(G, i), r);
-
-        if (a > WC_PI / 2)
-            a = WC_PI - a;      /* the angle to the line, not the ray */
-        if (a > best)
-        {
-            best = a;
-            _wc_qv3_unit_d(w, WC_ROW(G, i));
+            a1 = (b1 - g * b2) / det;
+            a2 = (b2 - g * b1) / det;
+            if (a1 < 0 || a2 < 0)
+                continue;
+            for (k = 0; k < 3; k++)
+                p[k] = xl[k] + a1 * r[k] + a2 * s[k];
+            consider(&best, near, x, p);
         }
     }
-
-cleanup:
-    fmpq_clear(s);
-    fmpq_clear(t);
-    flint_free(sg);
-    fmpq_mat_clear(G);
-    _fmpq_vec_clear(x, 3);
     return best;
 }
 
-/* The largest angle from a unit x of cl K (nonzero) to the plane n^perp.  */
-static double
-max_angle_to_plane(double * w, const wc_cone_t K, const fmpq * n)
+double
+ref_angle_to_cone(double * near, const double * x, const wc_cone_t B)
 {
-    fmpq * q1 = _fmpq_vec_init(3), * q2 = _fmpq_vec_init(3);
-    fmpq * m = _fmpq_vec_init(3);
-    fmpq_t b1, b2, nn;
-    fmpq_mat_t G;
-    double a;
+    dcone D;
+    double f;
 
-    fmpq_init(b1);
-    fmpq_init(b2);
-    fmpq_init(nn);
-    ref_cone_project(b1, q1, n, K);
-    _wc_qv3_neg(m, n);
-    ref_cone_project(b2, q2, m, K);
-    if (fmpq_cmp(b2, b1) > 0)
-    {
-        fmpq_swap(b1, b2);
-        _wc_qv3_swap(q1, q2);
-    }
-    _wc_qv3_dot(nn, n, n);
-    if (fmpq_is_zero(b1))
-    {
-        /* K lies in the plane */
-        _wc_cone_generators(G, K);
-        _wc_qv3_unit_d(w, WC_ROW(G, 0));
-        fmpq_mat_clear(G);
-        a = 0;
-    }
-    else
-    {
-        _wc_qv3_unit_d(w, q1);
-        /* sin^2 = b1 / |n|^2, tan^2 = b1 / (|n|^2 - b1) */
-        fmpq_sub(nn, nn, b1);
-        if (fmpq_is_zero(nn))
-            a = WC_PI / 2;
-        else
-        {
-            fmpq_div(nn, b1, nn);
-            a = _wc_atan_sqrt(nn);
-        }
-    }
-    fmpq_clear(b1);
-    fmpq_clear(b2);
-    fmpq_clear(nn);
-    _fmpq_vec_clear(q1, 3);
-    _fmpq_vec_clear(q2, 3);
-    _fmpq_vec_clear(m, 3);
-    return a;
+    dcone_init(&D, B);
+    f = dangle_to(near, x, &D);
+    dcone_clear(&D);
+    return f;
 }
 
-/* minimax_polar costs k^4 with k rays of B: above these many rays it
-   tries fewer candidates (triples, then pairs), and its answer is then
-   only a lower bound -- still at least pi/2, so it still exceeds every
-   tolerance wc_compare accepts.  */
-#define WC_MINIMAX_TRIPLES 48
-#define WC_MINIMAX_PAIRS 400
+/* ------------------------------------------------------------------ */
+/* Branch and bound.  */
 
 typedef struct
 {
-    slong k;            /* rays of B */
-    double * p;         /* 3 k: the unit vectors -r_i / |r_i| */
-    slong m, q;
-    double * h;         /* 3 m: K's unit facet normals */
-    double * e;         /* 3 q: K's unit equality normals */
-    double best;        /* the smallest max_i angle(x, p_i) so far */
-    double w[3];
+    int k;                      /* 1, 2 or 3 vertices */
+    int depth;                  /* subdivisions from the first pieces */
+    double v[3][3], f[3];       /* unit vertices and f there */
+    double ub;
 }
-minimax;
+piece;
+
+typedef struct
+{
+    const dcone * B;
+    double lo, at[3];
+    long evals;
+    piece * heap;
+    slong n, cap;
+}
+search;
+
+static double
+eval(search * S, double * near, const double * x)
+{
+    double f = dangle_to(near, x, S->B);
+
+    S->evals++;
+    if (f > S->lo)
+    {
+        S->lo = f;
+        S->at[0] = x[0];
+        S->at[1] = x[1];
+        S->at[2] = x[2];
+    }
+    return f;
+}
+
+/* The upper bound of f on the piece (its vertices' f already set).  */
+static void
+bound(search * S, piece * P)
+{
+    double c[3] = { 0, 0, 0 }, b[3], fc, R = 0, rho = 1, D = 0, m = 1;
+    double ub = INFINITY;
+    int i, j;
+
+    if (P->k == 1)
+    {
+        P->ub = P->f[0];
+        return;
+    }
+    for (i = 0; i < P->k; i++)
+        for (j = 0; j < 3; j++)
+            c[j] += P->v[i][j];
+    if (!unit(c))
+    {
+        P->ub = INFINITY;       /* never: pieces are small */
+        return;
+    }
+    fc = eval(S, b, c);
+    for (i = 0; i < P->k; i++)
+    {
+        double a = angle(c, P->v[i]), d;
+
+        R = a > R ? a : R;
+        rho = fmin(rho, dot(c, P->v[i]));
+        d = P->f[i] <= M_PI / 2 ? sin(P->f[i]) : 1;
+        D = fmax(D, d);
+        m = fmin(m, dot(P->v[i], b));
+    }
+    if (R < M_PI / 2)
+        ub = fc + R;
+    if (rho > 0 && D / rho < 1)
+        ub = fmin(ub, asin(D / rho));
+    if (rho > 0)
+    {
+        double s = m >= 0 ? m : m / rho;
+
+        ub = fmin(ub, acos(fmax(-1, fmin(1, s))));
+    }
+    if (S->B->nl > 0)
+        ub = fmin(ub, M_PI / 2);    /* x . (+-l) >= 0 for one sign */
+    P->ub = ub + SLACK;
+}
+
+/* Larger bounds first; among equal ones (pieces along a ridge capped at
+   pi/2), the deepest, so that the best value found approaches the ridge
+   in a few steps rather than after the whole ridge is refined.  */
+static int
+before(const piece * P, const piece * Q)
+{
+    return P->ub > Q->ub || (P->ub == Q->ub && P->depth > Q->depth);
+}
 
 static void
-minimax_try(minimax * M, const double * x0)
+heap_push(search * S, const piece * P)
 {
-    double x[3] = { x0[0], x0[1], x0[2] }, f = 0;
     slong i;
 
-    if (!dnormalize(x))
-        return;
-    /* candidates lie on faces of K only up to rounding: a small slack */
-    for (i = 0; i < M->m; i++)
-        if (ddot(M->h + 3 * i, x) > 1e-9)
-            return;
-    for (i = 0; i < M->q; i++)
-        if (fabs(ddot(M->e + 3 * i, x)) > 1e-9)
-            return;
-    for (i = 0; i < M->k && f < M->best; i++)
+    if (S->n == S->cap)
     {
-        double a = dangle(x, M->p + 3 * i);
-
-        if (a > f)
-            f = a;
+        S->cap = S->cap ? 2 * S->cap : 64;
+        S->heap = realloc(S->heap, sizeof(piece) * S->cap);
     }
-    if (f < M->best)
+    i = S->n++;
+    while (i > 0 && before(P, &S->heap[(i - 1) / 2]))
     {
-        M->best = f;
-        memcpy(M->w, x, sizeof M->w);
+        S->heap[i] = S->heap[(i - 1) / 2];
+        i = (i - 1) / 2;
     }
+    S->heap[i] = *P;
 }
 
-/* cl B pointed, K = cl A cap B° nonzero.  For x in K the angle to B is
-   min_i angle(x, r_i) = pi - max_i angle(x, p_i), p_i = -r_i; we want its
-   largest value, i.e. the smallest F(x) = max_i angle(x, p_i) over unit x
-   of K.  At a minimiser x, in the relative interior of a face K' of K,
-   the active p_i (those at the largest angle) are equidistant from x and
-   x is stationary for their common distance within span K': x is the
-   normalised projection of an active p_i onto the subspace of span K'
-   equidistant from all of them (at most dim span K' of them matter:
-   Caratheodory on the stationarity condition).  So F's minimum is among:
-   the rays of K (dimension-1 faces, and the lines both ways), and on each
-   face of dimension 2 or 3 the projections of single p_i, the
-   equidistant points of pairs, and on a 3-dimensional face the
-   circumcentres of triples.  The answer is at least pi/2 (K lies in B°).  */
-static double
-minimax_polar(double * w, const wc_cone_t K, const wc_cone_t B)
-{
-    minimax M;
-    fmpq * dir = _fmpq_vec_init(3);
-    fmpq_mat_t G;
-    slong f, i, j, l;
-    double a;
-
-    M.k = fmpz_mat_nrows(B->rays);
-    M.m = fmpz_mat_nrows(K->ineqs);
-    M.q = fmpz_mat_nrows(K->eqs);
-    M.p = flint_malloc(sizeof(double) * 3 * (M.k + 1));
-    M.h = flint_malloc(sizeof(double) * 3 * (M.m + 1));
-    M.e = flint_malloc(sizeof(double) * 3 * (M.q + 1));
-    M.best = INFINITY;
-    M.w[0] = M.w[1] = M.w[2] = 0;
-    for (i = 0; i < M.k; i++)
-    {
-        _wc_zv3_unit_d(M.p + 3 * i, WC_ROW(B->rays, i));
-        for (j = 0; j < 3; j++)
-            M.p[3 * i + j] = -M.p[3 * i + j];
-    }
-    for (i = 0; i < M.m; i++)
-        _wc_zv3_unit_d(M.h + 3 * i, WC_ROW(K->ineqs, i));
-    for (i = 0; i < M.q; i++)
-        _wc_zv3_unit_d(M.e + 3 * i, WC_ROW(K->eqs, i));
-
-    /* the generators first: when the p_i project to 0 on a face spanned
-       by lines, every unit vector of it is as good, and these are some */
-    _wc_cone_generators(G, K);
-    for (i = 0; i < fmpq_mat_nrows(G); i++)
-    {
-        double g[3];
-
-        _wc_qv3_unit_d(g, WC_ROW(G, i));
-        minimax_try(&M, g);
-    }
-    fmpq_mat_clear(G);
-    for (f = 0; f < K->nfaces; f++)
-    {
-        slong r = _wc_face_span(dir, K, K->faces + f);
-        double b[3], x[3], d[3];
-
-        if (r == 0)
-            continue;
-        _wc_qv3_unit_d(b, dir);
-        if (r == 1)
-        {
-            minimax_try(&M, b);
-            b[0] = -b[0];
-            b[1] = -b[1];
-            b[2] = -b[2];
-            minimax_try(&M, b);
-            continue;
-        }
-        for (i = 0; i < M.k; i++)
-        {
-            const double * pi = M.p + 3 * i;
-
-            if (r == 2)
-            {
-                double s = ddot(pi, b);
-
-                for (l = 0; l < 3; l++)
-                    x[l] = pi[l] - s * b[l];
-                minimax_try(&M, x);
-            }
-            else
-                minimax_try(&M, pi);
-            for (j = i + 1; j < M.k && M.k <= WC_MINIMAX_PAIRS; j++)
-            {
-                const double * pj = M.p + 3 * j;
-
-                for (l = 0; l < 3; l++)
-                    d[l] = pi[l] - pj[l];
-                if (r == 2)
-                {
-                    dcross(x, b, d);
-                    minimax_try(&M, x);
-                    for (l = 0; l < 3; l++)
-                        x[l] = -x[l];
-                    minimax_try(&M, x);
-                }
-                else
-                {
-                    for (l = 0; l < 3; l++)
-                        x[l] = pi[l] + pj[l];
-                    minimax_try(&M, x);
-                    if (M.k > WC_MINIMAX_TRIPLES)
-                        continue;
-                    for (l = j + 1; l < M.k; l++)
-                    {
-                        const double * pl = M.p + 3 * l;
-                        double e2[3];
-                        slong c;
-
-                        for (c = 0; c < 3; c++)
-                            e2[c] = pi[c] - pl[c];
-                        dcross(x, d, e2);
-                        minimax_try(&M, x);
-                        for (c = 0; c < 3; c++)
-                            x[c] = -x[c];
-                        minimax_try(&M, x);
-                    }
-                }
-            }
-        }
-    }
-    a = WC_PI - M.best;
-    if (!(a >= WC_PI / 2))
-        a = WC_PI / 2;
-    if (a > WC_PI)
-        a = WC_PI;
-    memcpy(w, M.w, sizeof M.w);
-    flint_free(M.p);
-    flint_free(M.h);
-    flint_free(M.e);
-    _fmpq_vec_clear(dir, 3);
-    return a;
-}
-
-/* Stack the rows of A and B (integer, k x 3) into a rational matrix.  */
 static void
-stack_rows(fmpq_mat_t S, const fmpz_mat_t A, const fmpz_mat_t B)
+heap_pop(search * S, piece * P)
 {
-    slong a = fmpz_mat_nrows(A), b = fmpz_mat_nrows(B), i;
+    piece last;
+    slong i = 0, c;
 
-    fmpq_mat_init(S, a + b, 3);
-    for (i = 0; i < a; i++)
-        _fmpq_vec_set_fmpz_vec(WC_ROW(S, i), WC_ROW(A, i), 3);
-    for (i = 0; i < b; i++)
-        _fmpq_vec_set_fmpz_vec(WC_ROW(S, a + i), WC_ROW(B, i), 3);
+    *P = S->heap[0];
+    last = S->heap[--S->n];
+    while ((c = 2 * i + 1) < S->n)
+    {
+        if (c + 1 < S->n && before(&S->heap[c + 1], &S->heap[c]))
+            c++;
+        if (!before(&S->heap[c], &last))
+            break;
+        S->heap[i] = S->heap[c];
+        i = c;
+    }
+    if (S->n > 0)
+        S->heap[i] = last;
 }
 
-/* 1 when h . r = 0 for every ray r of face F of B.  */
-static int
-tight(const fmpz * h, const wc_cone_t B, const wc_face_struct * F)
+/* A piece from k unit vertices, f evaluated at each.  */
+static void
+add_piece(search * S, int depth, int k, const double * v0,
+          const double * v1, const double * v2)
 {
-    fmpz_t s;
-    slong i, j;
-    int t = 1;
+    const double * v[3] = { v0, v1, v2 };
+    piece P;
+    int i, j;
 
-    fmpz_init(s);
-    for (i = 0; t && i < F->nrays; i++)
+    P.k = k;
+    P.depth = depth;
+    for (i = 0; i < k; i++)
     {
-        fmpz_zero(s);
         for (j = 0; j < 3; j++)
-            fmpz_addmul(s, h + j, WC_ROW(B->rays, F->rays[i]) + j);
-        t = fmpz_is_zero(s);
+            P.v[i][j] = v[i][j];
+        P.f[i] = eval(S, NULL, P.v[i]);
     }
-    fmpz_clear(s);
-    return t;
+    bound(S, &P);
+    heap_push(S, &P);
 }
 
-/* 1 when some facet h of A has h.g > 0 on every nonzero row g of R (or
-   an equality of A has one strict sign on them all) and L is zero: then
-   every nonzero x of pos R has h.x > 0 (resp. != 0) and is not in A.  A
-   cheap exact test that spares most cells their cone computations.  */
+/* Clip the polygon V (n unit vectors, cyclic) to h . x <= 0; returns the
+   new count (vertices normalised).  */
 static int
-separated(const wc_cone_t A, const fmpq_mat_t R, const fmpq_mat_t L)
+clip(double (*V)[3], int n, const double * h)
 {
-    slong m = fmpz_mat_nrows(A->ineqs), q = fmpz_mat_nrows(A->eqs), i, j;
-    fmpq_t s;
-    int sep = 0;
+    double W[16][3], d[16];
+    int i, j, m = 0;
 
-    for (j = 0; j < fmpq_mat_nrows(L); j++)
-        if (!_wc_qv3_is_zero(WC_ROW(L, j)))
-            return 0;
-    fmpq_init(s);
-    for (i = 0; !sep && i < m + q; i++)
+    for (i = 0; i < n; i++)
     {
-        const fmpz * h = i < m ? WC_ROW(A->ineqs, i) : WC_ROW(A->eqs, i - m);
-        int sign = 0, any = 0;
-
-        sep = 1;
-        for (j = 0; sep && j < fmpq_mat_nrows(R); j++)
-        {
-            if (_wc_qv3_is_zero(WC_ROW(R, j)))
-                continue;
-            _wc_zqvec3_dot(s, h, WC_ROW(R, j));
-            if (i < m)
-                sep = fmpq_sgn(s) > 0;
-            else
-            {
-                sep = fmpq_sgn(s) != 0 && (sign == 0 || fmpq_sgn(s) == sign);
-                sign = fmpq_sgn(s);
-            }
-            any = 1;
-        }
-        sep = sep && any;
+        d[i] = dot(h, V[i]);
+        if (fabs(d[i]) <= 1e-15)
+            d[i] = 0;
     }
-    fmpq_clear(s);
-    return sep;
-}
+    for (i = 0; i < n; i++)
+    {
+        int nx = (i + 1) % n;
 
-/* K = cl A cap (G + N_G), G the face F of B.  */
-static int
-cell(wc_cone_t K, const wc_cone_t A, const wc_cone_t B,
-     const wc_face_struct * F, wc_error_t err)
-{
-    slong m = fmpz_mat_nrows(B->ineqs), nr = 0, i;
-    fmpq_mat_t R, L, E, H;
-    wc_cone_t C;
-    int status = WC_OK, sep;
+        if (d[i] <= 0 && m < 16)
+        {
+            for (j = 0; j < 3; j++)
+                W[m][j] = V[i][j];
+            m++;
+        }
+        if (n > 1 && ((d[i] < 0 && d[nx] > 0) || (d[i] > 0 && d[nx] < 0))
+            && m < 16 && (n > 2 || i == 0))
+        {
+            double t = d[i] / (d[i] - d[nx]);
 
-    fmpq_mat_init(R, F->nrays + m, 3);
-    for (i = 0; i < F->nrays; i++)
-        _fmpq_vec_set_fmpz_vec(WC_ROW(R, nr++), WC_ROW(B->rays, F->rays[i]),
-                               3);
+            for (j = 0; j < 3; j++)
+                W[m][j] = V[i][j] + t * (V[nx][j] - V[i][j]);
+            unit(W[m]);
+            m++;
+        }
+    }
     for (i = 0; i < m; i++)
-        if (tight(WC_ROW(B->ineqs, i), B, F))
-            _fmpq_vec_set_fmpz_vec(WC_ROW(R, nr++), WC_ROW(B->ineqs, i), 3);
-    /* fmpq_mat has no shrink: zero rows generate nothing */
-    stack_rows(L, B->lines, B->eqs);
-    wc_cone_init(C, 3);
-    sep = separated(A, R, L);
-    if (sep)
-    {
-        /* K = {0}: the cone of no generator */
-        fmpq_mat_t Z;
-
-        fmpq_mat_init(Z, 0, 3);
-        status = wc_cone_set_generators(K, Z, Z, err);
-        fmpq_mat_clear(Z);
-    }
-    else
-        status = wc_cone_set_generators(C, R, L, err);
-    if (status == WC_OK && !sep)
-    {
-        stack_rows(E, A->eqs, C->eqs);
-        stack_rows(H, A->ineqs, C->ineqs);
-        status = wc_cone_set_hrep(K, E, H, NULL, err);
-        fmpq_mat_clear(E);
-        fmpq_mat_clear(H);
-    }
-    wc_cone_clear(C);
-    fmpq_mat_clear(R);
-    fmpq_mat_clear(L);
-    return status;
+        for (j = 0; j < 3; j++)
+            V[i][j] = W[i][j];
+    return m;
 }
 
-int
-ref_cone_directed_angle(double * dist, double * witness, const wc_cone_t A,
-                       const wc_cone_t B, wc_error_t err)
+static void
+split(search * S, const piece * P)
 {
-    double best = -1, w[3] = { 0, 0, 0 }, x[3];
-    fmpq * dir = _fmpq_vec_init(3);
-    wc_cone_t K;
-    slong f;
-    int status = WC_OK;
+    double m[3][3];
+    int i, j;
 
-    wc_cone_init(K, 3);
-    if (A->d != 3 || B->d != 3 || A->empty || B->empty)
+    for (i = 0; i < P->k; i++)
     {
-        status = wc_error_set(err, WC_EINPUT, NULL, 0, 0, "the angular "
-                              "distance needs two nonempty cones in R^3");
-        goto cleanup;
-    }
-    if (A->dim == 0)
-    {
-        best = 0;
-        goto cleanup;
-    }
-    if (B->dim == 0)
-    {
-        fmpq_mat_t G;
+        const double * a = P->v[i], * b = P->v[(i + 1) % P->k];
 
-        _wc_cone_generators(G, A);
-        _wc_qv3_unit_d(w, WC_ROW(G, 0));
-        fmpq_mat_clear(G);
-        best = INFINITY;
-        goto cleanup;
+        for (j = 0; j < 3; j++)
+            m[i][j] = a[j] + b[j];
+        unit(m[i]);
+        if (P->k == 2)
+            break;
     }
-    for (f = 0; f < B->nfaces; f++)
+    /* the vertices' f again: cheap next to the search, and simpler */
+    if (P->k == 2)
     {
-        const wc_face_struct * F = B->faces + f;
-        double a;
-        slong r;
+        add_piece(S, P->depth + 1, 2, P->v[0], m[0], NULL);
+        add_piece(S, P->depth + 1, 2, m[0], P->v[1], NULL);
+        return;
+    }
+    add_piece(S, P->depth + 1, 3, P->v[0], m[0], m[2]);
+    add_piece(S, P->depth + 1, 3, P->v[1], m[1], m[0]);
+    add_piece(S, P->depth + 1, 3, P->v[2], m[2], m[1]);
+    add_piece(S, P->depth + 1, 3, m[0], m[1], m[2]);
+}
 
-        r = _wc_face_span(dir, B, F);
-        if (r >= 3)
-            continue;   /* B itself, full-dimensional: angle 0 there */
-        status = cell(K, A, B, F, err);
-        if (status != WC_OK)
-            goto cleanup;
-        if (K->empty || K->dim == 0)
-            continue;
-        if (r == 2)
-            a = max_angle_to_plane(x, K, dir);
-        else if (r == 1)
-            a = max_angle_to_line(x, K, dir);
-        else
-            a = minimax_polar(x, K, B);
-        if (a > best)
+long
+ref_directed_angle(double * lo, double * hi, double * at, const wc_cone_t A,
+                   const wc_cone_t B, double tol, long maxeval)
+{
+    dcone DA, DB;
+    search S;
+    double top;
+    slong i, j;
+
+    dcone_init(&DA, A);
+    dcone_init(&DB, B);
+    S.B = &DB;
+    S.lo = 0;
+    S.at[0] = S.at[1] = S.at[2] = 0;
+    S.evals = 0;
+    S.heap = NULL;
+    S.n = S.cap = 0;
+    if (DA.nr == 0 && DA.nl == 0)
+        top = 0;                                /* cl A = {0} */
+    else if (DB.nr == 0 && DB.nl == 0)
+        top = S.lo = INFINITY;                  /* cl B = {0} */
+    else
+    {
+        slong dim = 3 - DA.ne;
+
+        if (dim == 1)
+            for (i = 0; i < DA.nr + 2 * DA.nl; i++)
+            {
+                double x[3];
+
+                for (j = 0; j < 3; j++)
+                    x[j] = i < DA.nr ? DA.r[3 * i + j]
+                        : (i - DA.nr) % 2 ? -DA.l[3 * ((i - DA.nr) / 2) + j]
+                        : DA.l[3 * ((i - DA.nr) / 2) + j];
+                add_piece(&S, 0, 1, x, NULL, NULL);
+            }
+        else if (dim == 2)
         {
-            best = a;
-            memcpy(w, x, sizeof w);
+            /* the plane's four quarter circles, clipped */
+            double u[3] = { 1, 0, 0 }, w[3], arc[4][2][3];
+            const double * e = DA.e;
+
+            if (fabs(e[0]) > 0.6)
+                u[0] = 0, u[1] = 1;
+            top = dot(u, e);
+            for (j = 0; j < 3; j++)
+                u[j] -= top * e[j];
+            unit(u);
+            cross(w, e, u);
+            for (i = 0; i < 4; i++)
+                for (j = 0; j < 3; j++)
+                {
+                    double c0 = i == 0 ? 1 : i == 2 ? -1 : 0;
+                    double s0 = i == 1 ? 1 : i == 3 ? -1 : 0;
+                    double c1 = i == 3 ? 1 : i == 1 ? -1 : 0;
+                    double s1 = i == 0 ? 1 : i == 2 ? -1 : 0;
+
+                    arc[i][0][j] = c0 * u[j] + s0 * w[j];
+                    arc[i][1][j] = c1 * u[j] + s1 * w[j];
+                }
+            for (i = 0; i < 4; i++)
+            {
+                int n = 2;
+
+                for (j = 0; j < DA.nh && n > 0; j++)
+                    n = clip(arc[i], n, DA.h + 3 * j);
+                if (n == 2 && angle(arc[i][0], arc[i][1]) > 0)
+                    add_piece(&S, 0, 2, arc[i][0], arc[i][1], NULL);
+                else if (n >= 1)
+                    add_piece(&S, 0, 1, arc[i][0], NULL, NULL);
+            }
+        }
+        else
+            for (i = 0; i < 8; i++)
+            {
+                /* octant i, clipped to A and fan-triangulated */
+                double V[16][3] = { { 0 } };
+                int n = 3, t;
+
+                V[0][0] = i & 1 ? -1 : 1;
+                V[1][1] = i & 2 ? -1 : 1;
+                V[2][2] = i & 4 ? -1 : 1;
+                for (j = 0; j < DA.nh && n > 0; j++)
+                    n = clip(V, n, DA.h + 3 * j);
+                for (t = 1; t + 1 < n; t++)
+                {
+                    double c[3];
+
+                    cross(c, V[t], V[t + 1]);
+                    if (fabs(dot(c, V[0])) > 1e-14)
+                        add_piece(&S, 0, 3, V[0], V[t], V[t + 1]);
+                    else if (angle(V[0], V[t]) > 0)
+                        add_piece(&S, 0, 2, V[0], V[t], NULL);
+                }
+                if (n == 2 && angle(V[0], V[1]) > 0)
+                    add_piece(&S, 0, 2, V[0], V[1], NULL);
+                else if (n == 1)
+                    add_piece(&S, 0, 1, V[0], NULL, NULL);
+            }
+        top = S.lo;
+        while (S.n > 0)
+        {
+            piece P;
+
+            top = fmax(S.lo, S.heap[0].ub);
+            if (S.heap[0].ub <= S.lo + tol || S.evals >= maxeval)
+                break;
+            heap_pop(&S, &P);
+            if (P.k > 1)
+                split(&S, &P);
+            top = S.lo;
         }
     }
-    if (best <= 0)
-    {
-        /* cl A lies in cl B: any of its vectors is a witness */
-        fmpq_mat_t G;
-
-        _wc_cone_generators(G, A);
-        _wc_qv3_unit_d(w, WC_ROW(G, 0));
-        fmpq_mat_clear(G);
-        best = 0;
-    }
-
-cleanup:
-    if (status == WC_OK)
-    {
-        *dist = best < 0 ? 0 : best;
-        if (witness != NULL)
-            memcpy(witness, w, sizeof w);
-    }
-    wc_cone_clear(K);
-    _fmpq_vec_clear(dir, 3);
-    return status;
+    *lo = S.lo;
+    *hi = top;
+    if (at != NULL)
+        for (j = 0; j < 3; j++)
+            at[j] = S.at[j];
+    free(S.heap);
+    dcone_clear(&DA);
+    dcone_clear(&DB);
+    return S.evals;
 }

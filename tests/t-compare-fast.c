@@ -6,11 +6,12 @@
    Public License, version 2 or (at your option) any later version.
 
    - _wc_cone_project (small faces tested on their own) against
-     ref_cone_project (every face against every facet): the same |P v|^2
+     old_cone_project (every face against every facet): the same |P v|^2
      and nearest point, exactly;
    - wc_cone_directed_angle (facets found through the 2-D faces, separated
-     cells skipped) against ref_cone_directed_angle (tests/ref-hausdorff.c,
-     the former code): the same distance and witness, to the bit;
+     cells skipped) against old_cone_directed_angle (tests/old-hausdorff.c,
+     the former code, a regression check): the same distance and
+     witness, to the bit;
    - the file lines wc_compare gives to the foreign cone's extreme rays and
      facets and its redundant rows (a binary search among the sorted
      canonical vectors) against a pairwise search done here.
@@ -32,11 +33,12 @@
 #include "float/angle.h"
 #include "exact/vec3.h"
 #include "testutil.h"
+#include "ref-hausdorff.h"
 
-int ref_cone_directed_angle(double * dist, double * witness,
+int old_cone_directed_angle(double * dist, double * witness,
                             const wc_cone_t A, const wc_cone_t B,
                             wc_error_t err);
-void ref_cone_project(fmpq_t best, fmpq * q, const fmpq * v,
+void old_cone_project(fmpq_t best, fmpq * q, const fmpq * v,
                       const wc_cone_t C);
 
 /* Random rows into G (r x 3): a layout drawn from a few degenerate ones.  */
@@ -103,7 +105,7 @@ check_project(const wc_cone_t C)
         for (j = 0; j < 3; j++)
             wctest_rand_fmpq(v + j, 5, 3);
         _wc_cone_project(b, q, v, C);
-        ref_cone_project(br, qr, v, C);
+        old_cone_project(br, qr, v, C);
         if (!fmpq_equal(b, br) || !fmpq_equal(q + 0, qr + 0)
             || !fmpq_equal(q + 1, qr + 1) || !fmpq_equal(q + 2, qr + 2))
         {
@@ -135,7 +137,7 @@ check_directed(const wc_cone_t A, const wc_cone_t B)
     wc_error_init(err);
     wc_error_init(errr);
     s = wc_cone_directed_angle(&d, w, A, B, err);
-    sr = ref_cone_directed_angle(&dr, wr, A, B, errr);
+    sr = old_cone_directed_angle(&dr, wr, A, B, errr);
     if (s != sr)
         wctest_fail("directed angle: status %d, reference %d", s, sr);
     if (s == WC_OK)
@@ -148,6 +150,147 @@ check_directed(const wc_cone_t A, const wc_cone_t B)
     }
     wc_error_clear(err);
     wc_error_clear(errr);
+}
+
+/* Against the independent reference (ref-hausdorff.c, branch and bound
+   in doubles): the library's distance must lie in the reference's
+   bracket, refined to REF_TOL wide, up to REF_EPS of rounding; its
+   witness must be a unit vector of cl A (within REF_EPS) at which the
+   reference's angle to cl B is the distance (within REF_EPS).  A bracket
+   wider than REF_MAXGAP after REF_MAXEVAL angles fails the test: the
+   reference would then check too little.  */
+#define REF_TOL 1e-7
+#define REF_EPS 1e-9
+#define REF_MAXGAP 1e-5
+#define REF_MAXEVAL 200000
+
+static long ref_evals_max, ref_calls, ref_capped;
+static double ref_gap_max;
+
+static void
+check_ref_directed(const wc_cone_t A, const wc_cone_t B)
+{
+    double d = 0, w[3] = { 0, 0, 0 }, lo, hi, fa, fb;
+    wc_error_t err;
+    long n;
+
+    wc_error_init(err);
+    if (wc_cone_directed_angle(&d, w, A, B, err) != WC_OK)
+        wctest_fail("directed angle: %s", err->message);
+    wc_error_clear(err);
+    n = ref_directed_angle(&lo, &hi, NULL, A, B, REF_TOL, REF_MAXEVAL);
+    ref_evals_max = n > ref_evals_max ? n : ref_evals_max;
+    ref_calls++;
+    ref_capped += n >= REF_MAXEVAL;
+    if (hi - lo > ref_gap_max && !isinf(lo))
+        ref_gap_max = hi - lo;
+    if (isinf(lo) || isinf(d))
+    {
+        if (!(isinf(lo) && isinf(d)))
+            wctest_fail("directed angle %.17g, ref-hausdorff.c %.17g", d, lo);
+        return;
+    }
+    if (!(d >= lo - REF_EPS && d <= hi + REF_EPS))
+        wctest_fail("directed angle %.17g outside ref-hausdorff.c's "
+                    "bracket [%.17g, %.17g]", d, lo, hi);
+    if (hi - lo > REF_MAXGAP)
+        wctest_fail("ref-hausdorff.c: bracket [%.17g, %.17g] after %ld "
+                    "angles", lo, hi, n);
+    if (fmpz_mat_nrows(A->rays) + fmpz_mat_nrows(A->lines) == 0)
+    {
+        if (d != 0 || w[0] != 0 || w[1] != 0 || w[2] != 0)
+            wctest_fail("cl A = {0}: distance %.17g, nonzero witness", d);
+        return;
+    }
+    if (fabs(w[0] * w[0] + w[1] * w[1] + w[2] * w[2] - 1) > REF_EPS)
+        wctest_fail("witness (%g, %g, %g) is not a unit vector", w[0], w[1],
+                    w[2]);
+    fa = ref_angle_to_cone(NULL, w, A);
+    fb = ref_angle_to_cone(NULL, w, B);
+    if (fa > REF_EPS || fabs(fb - d) > REF_EPS)
+        wctest_fail("witness (%.17g, %.17g, %.17g): at %.3g from cl A and "
+                    "%.17g from cl B, distance %.17g", w[0], w[1], w[2], fa,
+                    fb, d);
+}
+
+/* The cone of the given integer generators (nr rays, then nl lines).  */
+static void
+cone_si(wc_cone_t C, const slong (*g)[3], slong nr, slong nl)
+{
+    fmpq_mat_t R, L;
+    wc_error_t err;
+    slong i, j;
+
+    fmpq_mat_init(R, nr, 3);
+    fmpq_mat_init(L, nl, 3);
+    for (i = 0; i < nr + nl; i++)
+        for (j = 0; j < 3; j++)
+            fmpq_set_si(i < nr ? fmpq_mat_entry(R, i, j)
+                        : fmpq_mat_entry(L, i - nr, j), g[i][j], 1);
+    wc_error_init(err);
+    if (wc_cone_set_generators(C, R, L, err) != WC_OK)
+        wctest_fail("cone_si: %s", err->message);
+    wc_error_clear(err);
+    fmpq_mat_clear(R);
+    fmpq_mat_clear(L);
+}
+
+/* Degenerate pairs with the distance known in closed form: library and
+   reference must both give it.  */
+static void
+check_known(void)
+{
+    static const slong e3[3][3] = { { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+    static const slong ray[1][3] = { { 0, 0, 1 } };
+    static const slong half[3][3] = { { 0, 0, -1 }, { 1, 0, 0 },
+        { 0, 1, 0 } };
+    static const slong plane[2][3] = { { 1, 0, 0 }, { 0, 1, 0 } };
+    static const slong sector[2][3] = { { 1, 1, 0 }, { 1, -1, 0 } };
+    static const slong lifted[2][3] = { { 1, 1, 1 }, { 1, -1, 1 } };
+    static const slong two[2][3] = { { 1, 0, 0 }, { 0, 1, 0 } };
+    static const struct
+    {
+        const slong (*a)[3];
+        slong ar, al;
+        const slong (*b)[3];
+        slong br, bl;
+        double want;
+    }
+    T[] = {
+        { e3, 0, 3, ray, 1, 0, M_PI },          /* R^3 to a ray */
+        { e3, 0, 3, ray, 0, 1, M_PI / 2 },      /* R^3 to a line */
+        { plane, 0, 2, ray, 0, 1, M_PI / 2 },   /* plane to its normal */
+        { e3, 0, 3, half, 1, 2, M_PI / 2 },     /* R^3 to a half-space */
+        { lifted, 2, 0, sector, 2, 0, M_PI / 4 },   /* not at a ray */
+        { e3, 0, 3, two, 2, 0, M_PI - M_PI / 4 },   /* -(1,1,0) / sqrt 2 */
+        { ray, 1, 0, plane, 0, 2, M_PI / 2 },
+    };
+    size_t t;
+
+    for (t = 0; t < sizeof(T) / sizeof(T[0]); t++)
+    {
+        wc_cone_t A, B;
+        wc_error_t err;
+        double d, lo, hi;
+
+        wc_cone_init(A, 3);
+        wc_cone_init(B, 3);
+        wc_error_init(err);
+        cone_si(A, T[t].a, T[t].ar, T[t].al);
+        cone_si(B, T[t].b, T[t].br, T[t].bl);
+        if (wc_cone_directed_angle(&d, NULL, A, B, err) != WC_OK)
+            wctest_fail("known case %ld: %s", (long) t, err->message);
+        ref_directed_angle(&lo, &hi, NULL, A, B, REF_TOL, REF_MAXEVAL);
+        if (fabs(d - T[t].want) > REF_EPS || lo > T[t].want + REF_EPS
+            || hi < T[t].want - REF_EPS || hi - lo > REF_MAXGAP)
+            wctest_fail("known case %ld: %.17g, library %.17g, "
+                        "ref-hausdorff.c [%.17g, %.17g]", (long) t,
+                        T[t].want, d, lo, hi);
+        check_ref_directed(A, B);
+        wc_cone_clear(A);
+        wc_cone_clear(B);
+        wc_error_clear(err);
+    }
 }
 
 /* 1 when a = s b for some s > 0 (both nonzero): the pairwise test the
@@ -305,6 +448,7 @@ main(void)
     slong iters, i;
 
     wctest_init("t-compare-fast");
+    check_known();
     iters = wctest_iters(300);
     for (i = 0; i < iters; i++)
     {
@@ -322,6 +466,8 @@ main(void)
         check_project(B);
         check_directed(A, B);
         check_directed(B, A);
+        check_ref_directed(A, B);
+        check_ref_directed(B, A);
         check_lines(A);
         wc_cone_clear(A);
         wc_cone_clear(B);
@@ -330,6 +476,10 @@ main(void)
         fmpq_mat_clear(rb);
         fmpq_mat_clear(lb);
     }
+    if (getenv("WC_TEST_VERBOSE") != NULL)
+        printf("ref-hausdorff.c: %ld distances, at most %ld angles each, "
+               "%ld stopped early, widest bracket %.3g\n", ref_calls,
+               ref_evals_max, ref_capped, ref_gap_max);
     flint_cleanup_master();
     return 0;
 }

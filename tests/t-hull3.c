@@ -1,6 +1,6 @@
 /* t-hull3.c -- the O(k log k) 3-D kernel (fan3.c, polar3.c, cone3.c)
-   against the former O(k^2) kernel (ref-hull3.c, an independent copy)
-   and cddlib.
+   against an independent brute-force reference (ref-hull3.c), the former
+   O(k^2) kernel (old-hull3.c, a regression check) and cddlib.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -27,6 +27,7 @@
 
 #include "wrenchcone.h"
 #include "testutil.h"
+#include "old-hull3.h"
 #include "ref-hull3.h"
 #include "exact/hull3.h"
 #include "exact/vec3.h"
@@ -34,6 +35,10 @@
 #include "exact/fan3.h"
 #include "exact/polar3.h"
 #include "exact/cddbridge.h"
+
+/* ref-hull3.c is cubic in the number of rows: beyond this it is skipped
+   (the former kernel and cddlib still check those).  */
+#define REF_MAXK 80
 
 enum { GENERAL, POINTED, DEGENERATE, COPLANAR, HALFSPACE, WEDGE, SPACE,
        FACETRUN, AXISRUN, OBTUSE, LAYOUTS };
@@ -280,6 +285,112 @@ classify(const fmpq_mat_t R, const fmpq_mat_t L, const fmpq_mat_t E2,
     fmpz_clear(t);
 }
 
+static void
+want_equal(const fmpz_mat_t got, const fmpz_mat_t want, const char * what,
+           int layout, slong k)
+{
+    if (fmpz_mat_nrows(got) != fmpz_mat_nrows(want)
+        || (fmpz_mat_nrows(got) > 0 && !fmpz_mat_equal(got, want)))
+        wctest_fail("%s differs from ref-hull3.c (%s, k = %ld)", what,
+                    layout_name[layout], (long) k);
+}
+
+/* Against the independent reference: the kernel's V -> H and H -> V in
+   canonical form, and the canonical cones from generators and from
+   constraints, field for field.  */
+static void
+check_ref(const fmpq_mat_t R, const fmpq_mat_t L, int layout, slong k)
+{
+    fmpq_mat_t E1, H1, R1, L1, Q, P;
+    fmpz_mat_t E, H, LL, RR, X;
+    wc_cone_t C;
+    wc_error_t err;
+
+    fmpq_mat_init(E1, 0, 3);
+    fmpq_mat_init(H1, 0, 3);
+    fmpq_mat_init(R1, 0, 3);
+    fmpq_mat_init(L1, 0, 3);
+    fmpz_mat_init(E, 0, 3);
+    fmpz_mat_init(H, 0, 3);
+    fmpz_mat_init(LL, 0, 3);
+    fmpz_mat_init(RR, 0, 3);
+    fmpz_mat_init(X, 0, 3);
+    wc_cone_init(C, 3);
+    wc_error_init(err);
+
+    /* V -> H */
+    ref_hull3_facets(E, H, R, L);
+    if (_wc_hull3_v_to_h(E1, H1, R, L, err) != WC_OK)
+        wctest_fail("v_to_h: %s", err->message);
+    ref_hull3_span(X, E1);
+    want_equal(X, E, "v_to_h: equalities", layout, k);
+    ref_hull3_canon(X, H1, E);
+    want_equal(X, H, "v_to_h: facets", layout, k);
+    if (wc_cone_set_generators(C, R, L, err) != WC_OK)
+        wctest_fail("set_generators: %s", err->message);
+    /* the reference's own round trip gives the rays and lines */
+    fmpq_mat_init(Q, fmpz_mat_nrows(E), 3);
+    fmpq_mat_init(P, fmpz_mat_nrows(H), 3);
+    fmpq_mat_set_fmpz_mat(Q, E);
+    fmpq_mat_set_fmpz_mat(P, H);
+    ref_hull3_rays(LL, RR, Q, P);
+    if (C->empty || C->dim != 3 - fmpz_mat_nrows(E)
+        || C->lineality_dim != fmpz_mat_nrows(LL))
+        wctest_fail("cone from generators: dimensions differ from "
+                    "ref-hull3.c (%s, k = %ld)", layout_name[layout],
+                    (long) k);
+    want_equal(C->eqs, E, "cone from generators: equalities", layout, k);
+    want_equal(C->ineqs, H, "cone from generators: facets", layout, k);
+    want_equal(C->lines, LL, "cone from generators: lines", layout, k);
+    want_equal(C->rays, RR, "cone from generators: rays", layout, k);
+    /* the reference's rays generate the input cone: V -> H -> V -> H */
+    fmpq_mat_clear(Q);
+    fmpq_mat_clear(P);
+    fmpq_mat_init(Q, fmpz_mat_nrows(RR), 3);
+    fmpq_mat_init(P, fmpz_mat_nrows(LL), 3);
+    fmpq_mat_set_fmpz_mat(Q, RR);
+    fmpq_mat_set_fmpz_mat(P, LL);
+    ref_hull3_facets(X, LL, Q, P);
+    want_equal(X, E, "ref-hull3.c round trip: equalities", layout, k);
+    want_equal(LL, H, "ref-hull3.c round trip: facets", layout, k);
+    fmpq_mat_clear(Q);
+    fmpq_mat_clear(P);
+
+    /* H -> V: the generators read as constraints, L as equalities */
+    ref_hull3_rays(LL, RR, L, R);
+    if (_wc_hull3_h_to_v(R1, L1, L, R, err) != WC_OK)
+        wctest_fail("h_to_v: %s", err->message);
+    ref_hull3_span(X, L1);
+    want_equal(X, LL, "h_to_v: lines", layout, k);
+    ref_hull3_canon(X, R1, LL);
+    want_equal(X, RR, "h_to_v: rays", layout, k);
+    if (wc_cone_set_hrep(C, L, R, NULL, err) != WC_OK)
+        wctest_fail("set_hrep: %s", err->message);
+    want_equal(C->lines, LL, "cone from constraints: lines", layout, k);
+    want_equal(C->rays, RR, "cone from constraints: rays", layout, k);
+    fmpq_mat_init(Q, fmpz_mat_nrows(RR), 3);
+    fmpq_mat_init(P, fmpz_mat_nrows(LL), 3);
+    fmpq_mat_set_fmpz_mat(Q, RR);
+    fmpq_mat_set_fmpz_mat(P, LL);
+    ref_hull3_facets(E, H, Q, P);
+    want_equal(C->eqs, E, "cone from constraints: equalities", layout, k);
+    want_equal(C->ineqs, H, "cone from constraints: facets", layout, k);
+    fmpq_mat_clear(Q);
+    fmpq_mat_clear(P);
+
+    fmpq_mat_clear(E1);
+    fmpq_mat_clear(H1);
+    fmpq_mat_clear(R1);
+    fmpq_mat_clear(L1);
+    fmpz_mat_clear(E);
+    fmpz_mat_clear(H);
+    fmpz_mat_clear(LL);
+    fmpz_mat_clear(RR);
+    fmpz_mat_clear(X);
+    wc_cone_clear(C);
+    wc_error_clear(err);
+}
+
 /* One random set: both conversions against the reference, the whole cone
    against cddlib (use_cdd) and H -> V -> H round trips.  */
 static void
@@ -305,11 +416,13 @@ check_one(int layout, slong k, int use_cdd)
     wc_cone_init(D, 3);
     wc_error_init(err);
     make(R, L, layout, k);
+    if (k <= REF_MAXK)
+        check_ref(R, L, layout, k);
 
-    /* V -> H.  */
+    /* V -> H (the former kernel).  */
     if (_wc_hull3_v_to_h(E1, H1, R, L, err) != WC_OK)
         wctest_fail("v_to_h: %s", err->message);
-    ref_hull3_v_to_h(E2, H2, R, L);
+    old_hull3_v_to_h(E2, H2, R, L);
     if (!same_span(E1, E2))
         wctest_fail("v_to_h: equalities differ (%s, k = %ld)",
                     layout_name[layout], (long) k);
@@ -320,14 +433,14 @@ check_one(int layout, slong k, int use_cdd)
        with L as equalities).  */
     if (_wc_hull3_h_to_v(R1, L1, NULL, R, err) != WC_OK)
         wctest_fail("h_to_v: %s", err->message);
-    ref_hull3_h_to_v(R2, L2, NULL, R);
+    old_hull3_h_to_v(R2, L2, NULL, R);
     if (!same_span(L1, L2))
         wctest_fail("h_to_v: lines differ (%s, k = %ld)",
                     layout_name[layout], (long) k);
     same_rows(R1, R2, "h_to_v: rays", layout, k);
     if (_wc_hull3_h_to_v(R1, L1, L, R, err) != WC_OK)
         wctest_fail("h_to_v: %s", err->message);
-    ref_hull3_h_to_v(R2, L2, L, R);
+    old_hull3_h_to_v(R2, L2, L, R);
     if (!same_span(L1, L2))
         wctest_fail("h_to_v with equalities: lines differ (%s, k = %ld)",
                     layout_name[layout], (long) k);

@@ -12,9 +12,13 @@
    are located in it, shifted by wc_request_json_at's line.  (c) A
    comparison beyond its tolerance returns 4 with the comparison as the
    answer.  (d) On seeded random problems (degenerate layouts included)
-   and random Table 2 modes, a cone request of the problem's text answers
-   {"mode", "cone"} around wc_cone_fprint_json of wc_wrench_cone, or the
-   error of wc_mode_check; a modes request wc_modes_fprint's JSON.  */
+   and random Table 2 modes, by routes independent of the request's: a
+   cone request of the problem's text answers what the program prints for
+   the same problem in a file (`cone --format=json`, or its error line
+   and exit status as an error record) and, for a cone, the paper route's
+   cone written out by this file's own printer; a modes request with
+   witnesses answers what `modes --witness --format=json` prints, one
+   without lists exactly the modes ref-kin.c's brute force finds.  */
 
 #include <config.h>
 
@@ -22,9 +26,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
+#include <sys/wait.h>
 
 #include "wrenchcone.h"
 #include "testutil.h"
+#include "ref-kin.h"
 
 static const char section4_na[] =
     "{\"mode\": \"na\", \"cone\": {\"empty\": false, \"dim\": 3, "
@@ -210,24 +216,151 @@ json_string(const char * s)
     return buf;
 }
 
-/* One random problem: a cone request and a modes request against the
-   library's own calls.  */
+/* (d) computes its expected answers by other routes than the request's:
+   the cone by the paper's route (the request takes the direct one)
+   printed from the cone's fields by cone_json below, not by the
+   library's printer; the modes by ref-kin.c's brute force; and the whole
+   answers as the program prints them (`$WRENCHCONE cone|modes
+   --format=json FILE`), errors included.  */
+
+/* The program runs on one iteration in PROG_EVERY (and on errors).  */
+#define PROG_EVERY 5
+
+/* W in SPEC 4.1's JSON, written here from the fields.  */
+static void
+cone_json(FILE * f, const wc_cone_t W)
+{
+    const fmpz_mat_struct * M[4] = { W->ineqs, W->eqs, W->rays, W->lines };
+    static const char * key[4] = { "inequalities", "equalities", "rays",
+        "lines" };
+    slong m, i, j;
+
+    if (W->empty)
+    {
+        fputs("{\"empty\": true}", f);
+        return;
+    }
+    fprintf(f, "{\"empty\": false, \"dim\": %ld, \"lineality_dim\": %ld",
+            (long) W->dim, (long) W->lineality_dim);
+    for (m = 0; m < 4; m++)
+    {
+        fprintf(f, ", \"%s\": [", key[m]);
+        for (i = 0; i < fmpz_mat_nrows(M[m]); i++)
+        {
+            fputs(i ? ", [" : "[", f);
+            for (j = 0; j < fmpz_mat_ncols(M[m]); j++)
+            {
+                fputs(j ? ", \"" : "\"", f);
+                fmpz_fprint(f, fmpz_mat_entry(M[m], i, j));
+                fputc('"', f);
+            }
+            fputc(']', f);
+        }
+        fputc(']', f);
+    }
+    fputs(", \"faces\": [", f);
+    for (i = 0; i < W->nfaces; i++)
+    {
+        const wc_face_struct * F = W->faces + i;
+
+        fprintf(f, "%s{\"dim\": %ld, \"rays\": [", i ? ", " : "",
+                (long) F->dim);
+        for (j = 0; j < F->nrays; j++)
+            fprintf(f, "%s%ld", j ? ", " : "", (long) F->rays[j]);
+        fprintf(f, "], \"included\": %s}", F->included ? "true" : "false");
+    }
+    fputs("]}", f);
+}
+
+/* Run the program with the arguments args (shell words): *out := its
+   stdout, *errout := its stderr (malloc'd); returns its exit status.  */
+static int
+run_program(char ** out, char ** errout, const char * args)
+{
+    const char * prog = getenv("WRENCHCONE");
+    char ename[] = "/tmp/t-request-err-XXXXXX", * cmd = NULL, buf[4096];
+    size_t clen = 0, olen = 0, n;
+    FILE * c, * p, * o;
+    int fd, st;
+
+    if (prog == NULL)
+        wctest_fail("WRENCHCONE is not set (make check sets it)");
+    if ((fd = mkstemp(ename)) < 0)
+        wctest_fail("mkstemp failed");
+    close(fd);
+    c = open_memstream(&cmd, &clen);
+    fprintf(c, "'%s' %s 2>'%s'", prog, args, ename);
+    fclose(c);
+    o = open_memstream(out, &olen);
+    if ((p = popen(cmd, "r")) == NULL)
+        wctest_fail("cannot run %s", cmd);
+    while ((n = fread(buf, 1, sizeof buf, p)) > 0)
+        fwrite(buf, 1, n, o);
+    st = pclose(p);
+    fclose(o);
+    o = open_memstream(errout, &olen);
+    if ((p = fopen(ename, "r")) != NULL)
+    {
+        while ((n = fread(buf, 1, sizeof buf, p)) > 0)
+            fwrite(buf, 1, n, o);
+        fclose(p);
+    }
+    fclose(o);
+    unlink(ename);
+    free(cmd);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/* The error record of the program's "wrenchcone: F:L:C: M" line.  */
+static char *
+error_record(const char * line, int st)
+{
+    const char * p = line, * c[3];
+    char * rec = NULL, * file, * m, * msg;
+    size_t len = 0;
+    FILE * f;
+    int i;
+
+    if (strncmp(p, "wrenchcone: ", 12) != 0)
+        wctest_fail("the program's message is not located: %s", line);
+    p += 12;
+    for (i = 0; i < 3; i++)
+    {
+        if ((c[i] = strchr(i ? c[i - 1] + 1 : p, ':')) == NULL)
+            wctest_fail("the program's message is not located: %s", line);
+    }
+    file = strndup(p, c[0] - p);
+    msg = strndup(c[2] + 2, strcspn(c[2] + 2, "\n"));
+    m = json_string(msg);
+    f = open_memstream(&rec, &len);
+    fprintf(f, "{\"error\": {\"message\": %s, \"file\": \"%s\", \"line\": %ld, "
+            "\"column\": %ld, \"status\": %d}}\n", m, file,
+            strtol(c[0] + 1, NULL, 10), strtol(c[1] + 1, NULL, 10), st);
+    fclose(f);
+    free(file);
+    free(msg);
+    free(m);
+    return rec;
+}
+
+/* One random problem: a cone request and two modes requests.  */
 static void
 check_random(slong i)
 {
     wc_problem_t P, Q;
     wc_cone_t W;
-    wc_modes_t M;
     wc_error_t err;
-    char mode[16], * text = NULL, * lit, * req = NULL, * want = NULL;
-    size_t tlen = 0, rlen = 0, wlen = 0;
+    char mode[16], name[] = "/tmp/t-request-XXXXXX", ** modes = NULL;
+    char * text = NULL, * lit, * req = NULL, * want = NULL, * out, * eout;
+    char * args = NULL;
+    size_t tlen = 0, rlen = 0, wlen = 0, alen = 0;
+    slong count, k;
     FILE * f;
-    int st;
+    int st, fd;
 
     wc_problem_init(P);
     wc_problem_init(Q);
     wc_cone_init(W, 3);
-    wc_modes_init(M);
     wc_error_init(err);
     wctest_random_problem(P, 1, 4);
     wctest_random_mode(mode, P);
@@ -237,52 +370,114 @@ check_random(slong i)
     lit = json_string(text);
     if (wc_problem_parse(Q, text, tlen, "<problem_text>", err) != WC_OK)
         wctest_fail_problem(P, mode, "iteration %ld: no round trip", (long) i);
+    if ((fd = mkstemp(name)) < 0 || write(fd, text, tlen) != (ssize_t) tlen
+        || close(fd) != 0)
+        wctest_fail("cannot write %s", name);
 
-    f = open_memstream(&want, &wlen);
-    st = wc_mode_check(Q, mode, WC_TABLE_CONE, err);
-    if (st == WC_OK)
-        st = wc_wrench_cone(W, NULL, Q, mode, WC_METHOD_DIRECT, err);
-    if (st == WC_OK)
-    {
-        fprintf(f, WC_JSON_OPEN "\"mode\": \"%s\", \"cone\": ", mode);
-        wc_cone_fprint_json(f, W);
-        fputs("}\n", f);
-    }
-    else
-    {
-        char * m = json_string(err->message);
-
-        fprintf(f, "{\"error\": {\"message\": %s, \"file\": \"%s\", "
-                "\"line\": %ld, \"column\": %ld, \"status\": %d}}\n", m,
-                err->file, err->line, err->col, st);
-        free(m);
-    }
-    fclose(f);
+    /* cone: the paper route's cone; the program's answer every
+       PROG_EVERY iterations (it costs a process) and for every error */
     f = open_memstream(&req, &rlen);
     fprintf(f, "{\"command\": \"cone\", \"mode\": \"%s\", \"problem_text\": "
             "%s}", mode, lit);
     fclose(f);
-    expect(req, st, want);
+    st = wc_wrench_cone(W, NULL, Q, mode, WC_METHOD_PAPER, err);
+    if (st == WC_OK)
+    {
+        f = open_memstream(&want, &wlen);
+        fprintf(f, "{\"mode\": \"%s\", \"cone\": ", mode);
+        cone_json(f, W);
+        fputs("}\n", f);
+        fclose(f);
+        expect(req, WC_OK, want);
+        free(want);
+    }
+    if (st != WC_OK || i % PROG_EVERY == 0)
+    {
+        f = open_memstream(&args, &alen);
+        fprintf(f, "cone --format=json '%s' %s", name, mode);
+        fclose(f);
+        st = run_program(&out, &eout, args);
+        if (st == 0)
+            expect(req, WC_OK, out);
+        else
+        {
+            want = error_record(eout, st);
+            expect(req, st, want);
+            free(want);
+        }
+        free(out);
+        free(eout);
+        free(args);
+    }
+    free(req);
+
+    /* a mode one letter too long: the program's error line */
+    if (i % (2 * PROG_EVERY) == 0)
+    {
+        args = NULL;
+        f = open_memstream(&args, &alen);
+        fprintf(f, "cone --format=json '%s' %ss", name, mode);
+        fclose(f);
+        st = run_program(&out, &eout, args);
+        if (st == 0)
+            wctest_fail_problem(P, mode, "iteration %ld: the program took "
+                                "mode %ss", (long) i, mode);
+        want = error_record(eout, st);
+        f = open_memstream(&req, &rlen);
+        fprintf(f, "{\"command\": \"cone\", \"mode\": \"%ss\", "
+                "\"problem_text\": %s}", mode, lit);
+        fclose(f);
+        expect(req, st, want);
+        free(want);
+        free(out);
+        free(eout);
+        free(req);
+        free(args);
+    }
+
+    /* modes with witnesses: the program's answer */
+    if (i % PROG_EVERY == 0)
+    {
+        args = NULL;
+        f = open_memstream(&args, &alen);
+        fprintf(f, "modes --witness --format=json '%s'", name);
+        fclose(f);
+        if (run_program(&out, &eout, args) != 0)
+            wctest_fail_problem(P, mode, "iteration %ld: modes failed: %s",
+                                (long) i, eout);
+        f = open_memstream(&req, &rlen);
+        fprintf(f, "{\"witness\": true, \"problem_text\": %s, \"command\": "
+                "\"modes\"}", lit);
+        fclose(f);
+        expect(req, WC_OK, out);
+        free(out);
+        free(eout);
+        free(req);
+        free(args);
+    }
+
+    /* modes without: ref-kin.c's brute force */
+    if (ref_modes_bruteforce(&modes, &count, Q) != 0)
+        wctest_fail_problem(P, mode, "iteration %ld: ref-kin.c failed",
+                            (long) i);
+    f = open_memstream(&want, &wlen);
+    fprintf(f, "{\"fixels\": %ld, \"modes\": [", (long) Q->n);
+    for (k = 0; k < count; k++)
+        fprintf(f, "%s\"%s\"", k ? ", " : "", modes[k]);
+    fprintf(f, "], \"count\": %ld}\n", (long) count);
+    fclose(f);
+    f = open_memstream(&req, &rlen);
+    fprintf(f, "{\"problem_text\": %s, \"command\": \"modes\"}", lit);
+    fclose(f);
+    expect(req, WC_OK, want);
+    ref_modes_free(modes, count);
     free(req);
     free(want);
 
-    f = open_memstream(&want, &wlen);
-    st = wc_modes_enumerate(M, Q, err);
-    if (st != WC_OK)
-        wctest_fail_problem(P, mode, "iteration %ld: modes failed", (long) i);
-    wc_modes_fprint(f, M, 1, 1);
-    fclose(f);
-    f = open_memstream(&req, &rlen);
-    fprintf(f, "{\"witness\": true, \"problem_text\": %s, \"command\": "
-            "\"modes\"}", lit);
-    fclose(f);
-    expect(req, WC_OK, want);
-    free(req);
-    free(want);
+    unlink(name);
     free(lit);
     free(text);
     wc_error_clear(err);
-    wc_modes_clear(M);
     wc_cone_clear(W);
     wc_problem_clear(Q);
     wc_problem_clear(P);

@@ -1,0 +1,667 @@
+/* old-hausdorff.c -- the previous implementation, kept to catch
+   regressions; not an independent reference (that is
+   tests/ref-hausdorff.c, written without reading this file or
+   lib/float).
+
+   For tests/t-compare-fast.c: the directed angular distance as
+   lib/float/hausdorff.c computed it before its facet lookup (every facet
+   of B tested against every face) and before the nearest point of a cone
+   tested small faces on their own.  A copy of that code, kept unchanged
+   but for its names (old_*), so that the fast paths are checked against
+   the slow ones they replaced.
+
+   Copyright (C) 2026 the wrenchcone authors.
+   This file is part of wrenchcone, free software under the GNU General
+   Public License, version 2 or (at your option) any later version.
+
+   The directed distance sup { angle(x, B) : x in A, |x| = 1 } is NOT in
+   general attained at an extreme ray of A, even for pointed cones that
+   are close: for A = pos((1, 1, e), (1, -1, e)) and the wedge
+   B = pos((1, 1, 0), (1, -1, 0)), A's rays are at atan(e / sqrt 2) from
+   B but A's middle (1, 0, e) is at atan(e) (on the sphere the distance
+   to a great-circle arc is not convex; tests/t-compare.c checks this
+   case).  Nor is a vertex rule saved by the facets' normals.  So we split R^3
+   into the cells G + N_G of the normal fan of B (G a face of B, N_G its
+   normal cone): on G + N_G the nearest point of B is the projection onto
+   span G, and the angle to B is the angle to the subspace span G, whose
+   maximum over the polyhedral cone K = A cap (G + N_G) is found exactly:
+   - span G = R^3: 0;
+   - span G a plane with normal n: sin(angle) = |n.x| / |n| |x|, whose
+     maximum over unit x in K is |P_K n| / |n| or |P_K (-n)| / |n|
+     (|P_K n| is the support function of K cap ball at n);
+   - span G a line R r: cos(angle) = |r.x| / |r| |x|; if r.x vanishes at
+     some nonzero x of K the maximum is pi/2, else r.x keeps one sign on K
+     and x -> |r.x| / |x| is quasi-concave there (its superlevel sets are
+     convex circular cones), so its minimum is at a generator of K;
+   - G = {0} (B pointed): K lies in the polar cone B°, every angle is at
+     least pi/2, and the nearest point of B to x is one of B's extreme
+     rays (x.b <= 0 on B, and the same quasi-concavity); the largest
+     min_i angle(x, r_i) over K is found by enumerating the finitely many
+     candidates (see minimax_polar), in doubles.  */
+
+#include <config.h>
+
+#include <math.h>
+#include <string.h>
+
+#include <flint/fmpq_vec.h>
+
+#include "float/compare.h"
+#include "float/angle.h"
+#include "exact/vec3.h"
+
+int old_cone_directed_angle(double * dist, double * witness,
+                            const wc_cone_t A, const wc_cone_t B,
+                            wc_error_t err);
+void old_cone_project(fmpq_t best, fmpq * q, const fmpq * v,
+                      const wc_cone_t C);
+
+/* ------------------------------------------------------------------ */
+/* The nearest point of a cone: every face's projection tested against
+   every facet.  */
+
+static int
+old_in_closure(const wc_cone_t C, const fmpq * p)
+{
+    fmpq_t s;
+    slong i;
+    int in = 1;
+
+    fmpq_init(s);
+    for (i = 0; in && i < fmpz_mat_nrows(C->ineqs); i++)
+    {
+        _wc_zqvec3_dot(s, WC_ROW(C->ineqs, i), p);
+        in = fmpq_sgn(s) <= 0;
+    }
+    for (i = 0; in && i < fmpz_mat_nrows(C->eqs); i++)
+    {
+        _wc_zqvec3_dot(s, WC_ROW(C->eqs, i), p);
+        in = fmpq_is_zero(s);
+    }
+    fmpq_clear(s);
+    return in;
+}
+
+void
+old_cone_project(fmpq_t best, fmpq * q, const fmpq * v, const wc_cone_t C)
+{
+    fmpq * dir = _fmpq_vec_init(3), * p = _fmpq_vec_init(3);
+    fmpq_t n2;
+    slong f, r;
+
+    fmpq_init(n2);
+    fmpq_zero(best);
+    if (q != NULL)
+        _wc_qv3_zero(q);
+    for (f = 0; f < C->nfaces; f++)
+    {
+        r = _wc_face_span(dir, C, C->faces + f);
+        _wc_span_project(p, v, r, dir);
+        if (!old_in_closure(C, p))
+            continue;
+        _wc_qv3_dot(n2, p, p);
+        if (fmpq_cmp(n2, best) > 0)
+        {
+            fmpq_set(best, n2);
+            if (q != NULL)
+                _wc_qv3_set(q, p);
+        }
+    }
+    fmpq_clear(n2);
+    _fmpq_vec_clear(dir, 3);
+    _fmpq_vec_clear(p, 3);
+}
+
+/* ------------------------------------------------------------------ */
+/* Unit vectors in doubles, for the candidates of minimax_polar.  */
+
+static double
+ddot(const double * a, const double * b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void
+dcross(double * c, const double * a, const double * b)
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Normalise a in place; 0 when it is (numerically) zero.  */
+static int
+dnormalize(double * a)
+{
+    double n = sqrt(ddot(a, a));
+
+    if (!(n > 1e-300))
+        return 0;
+    a[0] /= n;
+    a[1] /= n;
+    a[2] /= n;
+    return 1;
+}
+
+/* The angle between a and b (atan2 of |a x b| and a.b: accurate near 0
+   and pi, where acos is not).  */
+static double
+dangle(const double * a, const double * b)
+{
+    double c[3];
+
+    dcross(c, a, b);
+    return atan2(sqrt(ddot(c, c)), ddot(a, b));
+}
+
+/* ------------------------------------------------------------------ */
+/* The largest angle from a cell to a face's span.  */
+
+/* The largest angle from a unit x of cl K (nonzero) to the line R r.  */
+static double
+max_angle_to_line(double * w, const wc_cone_t K, const fmpq * r)
+{
+    fmpq_mat_t G;
+    fmpq * x = _fmpq_vec_init(3);
+    fmpq_t s, t;
+    int * sg;
+    slong n, i, j;
+    double best = -1;
+
+    _wc_cone_generators(G, K);
+    n = fmpq_mat_nrows(G);
+    sg = flint_malloc(sizeof(int) * (n + 1));
+    fmpq_init(s);
+    fmpq_init(t);
+    for (i = 0; i < n; i++)
+    {
+        _wc_qv3_dot(s, r, WC_ROW(G, i));
+        sg[i] = fmpq_sgn(s);
+        if (sg[i] == 0)
+        {
+            _wc_qv3_unit_d(w, WC_ROW(G, i));
+            best = WC_PI / 2;
+            goto cleanup;
+        }
+    }
+    /* r.x changes sign on K: for generators g, h with r.g > 0 > r.h,
+       x = (r.g) h - (r.h) g is in K and has r.x = 0 -- nonzero unless g
+       and h are opposite (when K is a single line, all such x are 0).  */
+    for (i = 0; i < n; i++)
+        for (j = 0; j < n; j++)
+        {
+            slong c;
+
+            if (sg[i] <= 0 || sg[j] >= 0)
+                continue;
+            _wc_qv3_dot(s, r, WC_ROW(G, i));
+            _wc_qv3_dot(t, r, WC_ROW(G, j));
+            for (c = 0; c < 3; c++)
+            {
+                fmpq_mul(x + c, s, fmpq_mat_entry(G, j, c));
+                fmpq_submul(x + c, t, fmpq_mat_entry(G, i, c));
+            }
+            if (!_wc_qv3_is_zero(x))
+            {
+                _wc_qv3_unit_d(w, x);
+                best = WC_PI / 2;
+                goto cleanup;
+            }
+        }
+    for (i = 0; i < n; i++)
+    {
+        double a = wc_angle_vectors(WC_ROW(G, i), r);
+
+        if (a > WC_PI / 2)
+            a = WC_PI - a;      /* the angle to the line, not the ray */
+        if (a > best)
+        {
+            best = a;
+            _wc_qv3_unit_d(w, WC_ROW(G, i));
+        }
+    }
+
+cleanup:
+    fmpq_clear(s);
+    fmpq_clear(t);
+    flint_free(sg);
+    fmpq_mat_clear(G);
+    _fmpq_vec_clear(x, 3);
+    return best;
+}
+
+/* The largest angle from a unit x of cl K (nonzero) to the plane n^perp.  */
+static double
+max_angle_to_plane(double * w, const wc_cone_t K, const fmpq * n)
+{
+    fmpq * q1 = _fmpq_vec_init(3), * q2 = _fmpq_vec_init(3);
+    fmpq * m = _fmpq_vec_init(3);
+    fmpq_t b1, b2, nn;
+    fmpq_mat_t G;
+    double a;
+
+    fmpq_init(b1);
+    fmpq_init(b2);
+    fmpq_init(nn);
+    old_cone_project(b1, q1, n, K);
+    _wc_qv3_neg(m, n);
+    old_cone_project(b2, q2, m, K);
+    if (fmpq_cmp(b2, b1) > 0)
+    {
+        fmpq_swap(b1, b2);
+        _wc_qv3_swap(q1, q2);
+    }
+    _wc_qv3_dot(nn, n, n);
+    if (fmpq_is_zero(b1))
+    {
+        /* K lies in the plane */
+        _wc_cone_generators(G, K);
+        _wc_qv3_unit_d(w, WC_ROW(G, 0));
+        fmpq_mat_clear(G);
+        a = 0;
+    }
+    else
+    {
+        _wc_qv3_unit_d(w, q1);
+        /* sin^2 = b1 / |n|^2, tan^2 = b1 / (|n|^2 - b1) */
+        fmpq_sub(nn, nn, b1);
+        if (fmpq_is_zero(nn))
+            a = WC_PI / 2;
+        else
+        {
+            fmpq_div(nn, b1, nn);
+            a = _wc_atan_sqrt(nn);
+        }
+    }
+    fmpq_clear(b1);
+    fmpq_clear(b2);
+    fmpq_clear(nn);
+    _fmpq_vec_clear(q1, 3);
+    _fmpq_vec_clear(q2, 3);
+    _fmpq_vec_clear(m, 3);
+    return a;
+}
+
+/* minimax_polar costs k^4 with k rays of B: above these many rays it
+   tries fewer candidates (triples, then pairs), and its answer is then
+   only a lower bound -- still at least pi/2, so it still exceeds every
+   tolerance wc_compare accepts.  */
+#define WC_MINIMAX_TRIPLES 48
+#define WC_MINIMAX_PAIRS 400
+
+typedef struct
+{
+    slong k;            /* rays of B */
+    double * p;         /* 3 k: the unit vectors -r_i / |r_i| */
+    slong m, q;
+    double * h;         /* 3 m: K's unit facet normals */
+    double * e;         /* 3 q: K's unit equality normals */
+    double best;        /* the smallest max_i angle(x, p_i) so far */
+    double w[3];
+}
+minimax;
+
+static void
+minimax_try(minimax * M, const double * x0)
+{
+    double x[3] = { x0[0], x0[1], x0[2] }, f = 0;
+    slong i;
+
+    if (!dnormalize(x))
+        return;
+    /* candidates lie on faces of K only up to rounding: a small slack */
+    for (i = 0; i < M->m; i++)
+        if (ddot(M->h + 3 * i, x) > 1e-9)
+            return;
+    for (i = 0; i < M->q; i++)
+        if (fabs(ddot(M->e + 3 * i, x)) > 1e-9)
+            return;
+    for (i = 0; i < M->k && f < M->best; i++)
+    {
+        double a = dangle(x, M->p + 3 * i);
+
+        if (a > f)
+            f = a;
+    }
+    if (f < M->best)
+    {
+        M->best = f;
+        memcpy(M->w, x, sizeof M->w);
+    }
+}
+
+/* cl B pointed, K = cl A cap B° nonzero.  For x in K the angle to B is
+   min_i angle(x, r_i) = pi - max_i angle(x, p_i), p_i = -r_i; we want its
+   largest value, i.e. the smallest F(x) = max_i angle(x, p_i) over unit x
+   of K.  At a minimiser x, in the relative interior of a face K' of K,
+   the active p_i (those at the largest angle) are equidistant from x and
+   x is stationary for their common distance within span K': x is the
+   normalised projection of an active p_i onto the subspace of span K'
+   equidistant from all of them (at most dim span K' of them matter:
+   Caratheodory on the stationarity condition).  So F's minimum is among:
+   the rays of K (dimension-1 faces, and the lines both ways), and on each
+   face of dimension 2 or 3 the projections of single p_i, the
+   equidistant points of pairs, and on a 3-dimensional face the
+   circumcentres of triples.  The answer is at least pi/2 (K lies in B°).  */
+static double
+minimax_polar(double * w, const wc_cone_t K, const wc_cone_t B)
+{
+    minimax M;
+    fmpq * dir = _fmpq_vec_init(3);
+    fmpq_mat_t G;
+    slong f, i, j, l;
+    double a;
+
+    M.k = fmpz_mat_nrows(B->rays);
+    M.m = fmpz_mat_nrows(K->ineqs);
+    M.q = fmpz_mat_nrows(K->eqs);
+    M.p = flint_malloc(sizeof(double) * 3 * (M.k + 1));
+    M.h = flint_malloc(sizeof(double) * 3 * (M.m + 1));
+    M.e = flint_malloc(sizeof(double) * 3 * (M.q + 1));
+    M.best = INFINITY;
+    M.w[0] = M.w[1] = M.w[2] = 0;
+    for (i = 0; i < M.k; i++)
+    {
+        _wc_zv3_unit_d(M.p + 3 * i, WC_ROW(B->rays, i));
+        for (j = 0; j < 3; j++)
+            M.p[3 * i + j] = -M.p[3 * i + j];
+    }
+    for (i = 0; i < M.m; i++)
+        _wc_zv3_unit_d(M.h + 3 * i, WC_ROW(K->ineqs, i));
+    for (i = 0; i < M.q; i++)
+        _wc_zv3_unit_d(M.e + 3 * i, WC_ROW(K->eqs, i));
+
+    /* the generators first: when the p_i project to 0 on a face spanned
+       by lines, every unit vector of it is as good, and these are some */
+    _wc_cone_generators(G, K);
+    for (i = 0; i < fmpq_mat_nrows(G); i++)
+    {
+        double g[3];
+
+        _wc_qv3_unit_d(g, WC_ROW(G, i));
+        minimax_try(&M, g);
+    }
+    fmpq_mat_clear(G);
+    for (f = 0; f < K->nfaces; f++)
+    {
+        slong r = _wc_face_span(dir, K, K->faces + f);
+        double b[3], x[3], d[3];
+
+        if (r == 0)
+            continue;
+        _wc_qv3_unit_d(b, dir);
+        if (r == 1)
+        {
+            minimax_try(&M, b);
+            b[0] = -b[0];
+            b[1] = -b[1];
+            b[2] = -b[2];
+            minimax_try(&M, b);
+            continue;
+        }
+        for (i = 0; i < M.k; i++)
+        {
+            const double * pi = M.p + 3 * i;
+
+            if (r == 2)
+            {
+                double s = ddot(pi, b);
+
+                for (l = 0; l < 3; l++)
+                    x[l] = pi[l] - s * b[l];
+                minimax_try(&M, x);
+            }
+            else
+                minimax_try(&M, pi);
+            for (j = i + 1; j < M.k && M.k <= WC_MINIMAX_PAIRS; j++)
+            {
+                const double * pj = M.p + 3 * j;
+
+                for (l = 0; l < 3; l++)
+                    d[l] = pi[l] - pj[l];
+                if (r == 2)
+                {
+                    dcross(x, b, d);
+                    minimax_try(&M, x);
+                    for (l = 0; l < 3; l++)
+                        x[l] = -x[l];
+                    minimax_try(&M, x);
+                }
+                else
+                {
+                    for (l = 0; l < 3; l++)
+                        x[l] = pi[l] + pj[l];
+                    minimax_try(&M, x);
+                    if (M.k > WC_MINIMAX_TRIPLES)
+                        continue;
+                    for (l = j + 1; l < M.k; l++)
+                    {
+                        const double * pl = M.p + 3 * l;
+                        double e2[3];
+                        slong c;
+
+                        for (c = 0; c < 3; c++)
+                            e2[c] = pi[c] - pl[c];
+                        dcross(x, d, e2);
+                        minimax_try(&M, x);
+                        for (c = 0; c < 3; c++)
+                            x[c] = -x[c];
+                        minimax_try(&M, x);
+                    }
+                }
+            }
+        }
+    }
+    a = WC_PI - M.best;
+    if (!(a >= WC_PI / 2))
+        a = WC_PI / 2;
+    if (a > WC_PI)
+        a = WC_PI;
+    memcpy(w, M.w, sizeof M.w);
+    flint_free(M.p);
+    flint_free(M.h);
+    flint_free(M.e);
+    _fmpq_vec_clear(dir, 3);
+    return a;
+}
+
+/* Stack the rows of A and B (integer, k x 3) into a rational matrix.  */
+static void
+stack_rows(fmpq_mat_t S, const fmpz_mat_t A, const fmpz_mat_t B)
+{
+    slong a = fmpz_mat_nrows(A), b = fmpz_mat_nrows(B), i;
+
+    fmpq_mat_init(S, a + b, 3);
+    for (i = 0; i < a; i++)
+        _fmpq_vec_set_fmpz_vec(WC_ROW(S, i), WC_ROW(A, i), 3);
+    for (i = 0; i < b; i++)
+        _fmpq_vec_set_fmpz_vec(WC_ROW(S, a + i), WC_ROW(B, i), 3);
+}
+
+/* 1 when h . r = 0 for every ray r of face F of B.  */
+static int
+tight(const fmpz * h, const wc_cone_t B, const wc_face_struct * F)
+{
+    fmpz_t s;
+    slong i, j;
+    int t = 1;
+
+    fmpz_init(s);
+    for (i = 0; t && i < F->nrays; i++)
+    {
+        fmpz_zero(s);
+        for (j = 0; j < 3; j++)
+            fmpz_addmul(s, h + j, WC_ROW(B->rays, F->rays[i]) + j);
+        t = fmpz_is_zero(s);
+    }
+    fmpz_clear(s);
+    return t;
+}
+
+/* 1 when some facet h of A has h.g > 0 on every nonzero row g of R (or
+   an equality of A has one strict sign on them all) and L is zero: then
+   every nonzero x of pos R has h.x > 0 (resp. != 0) and is not in A.  A
+   cheap exact test that spares most cells their cone computations.  */
+static int
+separated(const wc_cone_t A, const fmpq_mat_t R, const fmpq_mat_t L)
+{
+    slong m = fmpz_mat_nrows(A->ineqs), q = fmpz_mat_nrows(A->eqs), i, j;
+    fmpq_t s;
+    int sep = 0;
+
+    for (j = 0; j < fmpq_mat_nrows(L); j++)
+        if (!_wc_qv3_is_zero(WC_ROW(L, j)))
+            return 0;
+    fmpq_init(s);
+    for (i = 0; !sep && i < m + q; i++)
+    {
+        const fmpz * h = i < m ? WC_ROW(A->ineqs, i) : WC_ROW(A->eqs, i - m);
+        int sign = 0, any = 0;
+
+        sep = 1;
+        for (j = 0; sep && j < fmpq_mat_nrows(R); j++)
+        {
+            if (_wc_qv3_is_zero(WC_ROW(R, j)))
+                continue;
+            _wc_zqvec3_dot(s, h, WC_ROW(R, j));
+            if (i < m)
+                sep = fmpq_sgn(s) > 0;
+            else
+            {
+                sep = fmpq_sgn(s) != 0 && (sign == 0 || fmpq_sgn(s) == sign);
+                sign = fmpq_sgn(s);
+            }
+            any = 1;
+        }
+        sep = sep && any;
+    }
+    fmpq_clear(s);
+    return sep;
+}
+
+/* K = cl A cap (G + N_G), G the face F of B.  */
+static int
+cell(wc_cone_t K, const wc_cone_t A, const wc_cone_t B,
+     const wc_face_struct * F, wc_error_t err)
+{
+    slong m = fmpz_mat_nrows(B->ineqs), nr = 0, i;
+    fmpq_mat_t R, L, E, H;
+    wc_cone_t C;
+    int status = WC_OK, sep;
+
+    fmpq_mat_init(R, F->nrays + m, 3);
+    for (i = 0; i < F->nrays; i++)
+        _fmpq_vec_set_fmpz_vec(WC_ROW(R, nr++), WC_ROW(B->rays, F->rays[i]),
+                               3);
+    for (i = 0; i < m; i++)
+        if (tight(WC_ROW(B->ineqs, i), B, F))
+            _fmpq_vec_set_fmpz_vec(WC_ROW(R, nr++), WC_ROW(B->ineqs, i), 3);
+    /* fmpq_mat has no shrink: zero rows generate nothing */
+    stack_rows(L, B->lines, B->eqs);
+    wc_cone_init(C, 3);
+    sep = separated(A, R, L);
+    if (sep)
+    {
+        /* K = {0}: the cone of no generator */
+        fmpq_mat_t Z;
+
+        fmpq_mat_init(Z, 0, 3);
+        status = wc_cone_set_generators(K, Z, Z, err);
+        fmpq_mat_clear(Z);
+    }
+    else
+        status = wc_cone_set_generators(C, R, L, err);
+    if (status == WC_OK && !sep)
+    {
+        stack_rows(E, A->eqs, C->eqs);
+        stack_rows(H, A->ineqs, C->ineqs);
+        status = wc_cone_set_hrep(K, E, H, NULL, err);
+        fmpq_mat_clear(E);
+        fmpq_mat_clear(H);
+    }
+    wc_cone_clear(C);
+    fmpq_mat_clear(R);
+    fmpq_mat_clear(L);
+    return status;
+}
+
+int
+old_cone_directed_angle(double * dist, double * witness, const wc_cone_t A,
+                       const wc_cone_t B, wc_error_t err)
+{
+    double best = -1, w[3] = { 0, 0, 0 }, x[3];
+    fmpq * dir = _fmpq_vec_init(3);
+    wc_cone_t K;
+    slong f;
+    int status = WC_OK;
+
+    wc_cone_init(K, 3);
+    if (A->d != 3 || B->d != 3 || A->empty || B->empty)
+    {
+        status = wc_error_set(err, WC_EINPUT, NULL, 0, 0, "the angular "
+                              "distance needs two nonempty cones in R^3");
+        goto cleanup;
+    }
+    if (A->dim == 0)
+    {
+        best = 0;
+        goto cleanup;
+    }
+    if (B->dim == 0)
+    {
+        fmpq_mat_t G;
+
+        _wc_cone_generators(G, A);
+        _wc_qv3_unit_d(w, WC_ROW(G, 0));
+        fmpq_mat_clear(G);
+        best = INFINITY;
+        goto cleanup;
+    }
+    for (f = 0; f < B->nfaces; f++)
+    {
+        const wc_face_struct * F = B->faces + f;
+        double a;
+        slong r;
+
+        r = _wc_face_span(dir, B, F);
+        if (r >= 3)
+            continue;   /* B itself, full-dimensional: angle 0 there */
+        status = cell(K, A, B, F, err);
+        if (status != WC_OK)
+            goto cleanup;
+        if (K->empty || K->dim == 0)
+            continue;
+        if (r == 2)
+            a = max_angle_to_plane(x, K, dir);
+        else if (r == 1)
+            a = max_angle_to_line(x, K, dir);
+        else
+            a = minimax_polar(x, K, B);
+        if (a > best)
+        {
+            best = a;
+            memcpy(w, x, sizeof w);
+        }
+    }
+    if (best <= 0)
+    {
+        /* cl A lies in cl B: any of its vectors is a witness */
+        fmpq_mat_t G;
+
+        _wc_cone_generators(G, A);
+        _wc_qv3_unit_d(w, WC_ROW(G, 0));
+        fmpq_mat_clear(G);
+        best = 0;
+    }
+
+cleanup:
+    if (status == WC_OK)
+    {
+        *dist = best < 0 ? 0 : best;
+        if (witness != NULL)
+            memcpy(witness, w, sizeof w);
+    }
+    wc_cone_clear(K);
+    _fmpq_vec_clear(dir, 3);
+    return status;
+}
