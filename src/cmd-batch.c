@@ -1,6 +1,6 @@
 /* cmd-batch.c -- wrenchcone batch: JSON Lines requests in, one answer
-   line out per request, in order, through the library's request entry
-   point (api/request.h).
+   line out per request, in order, through the library's batch engine
+   (api/batch.h), by one thread or several.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -34,64 +34,18 @@ const char cmd_batch_usage[] =
     "writing the answers fails.\n"
     "\n"
     "Options:\n"
+    "  --jobs=N         answer with N threads (1 to 256; default 1); the\n"
+    "                   answers are the same, in the same order, each still\n"
+    "                   written once it and all earlier ones are done\n"
     "  -h, --help       print this help and exit\n"
     "  -V, --version    print versions and exit\n";
 
+enum { OPT_JOBS = 256 };
+
 const struct option cmd_batch_options[] = {
+    { "jobs", required_argument, NULL, OPT_JOBS },
     { NULL, 0, NULL, 0 }
 };
-
-/* Answer every line of f (named name); the exit status.  */
-static int
-answer_lines(FILE * f, const char * name)
-{
-    char * line = NULL, * out = NULL;
-    size_t cap = 0, outlen = 0;
-    ssize_t n;
-    long lineno = 0;
-    int worst = WC_OK, status;
-    wc_error_t err;
-
-    wc_error_init(err);
-    while ((n = getline(&line, &cap, f)) >= 0)
-    {
-        lineno++;
-        if (strspn(line, " \t\r\n") == (size_t) n)
-            continue;
-        /* The line without its end, so that an error at the end of the
-           request is located on its line.  */
-        if (n > 0 && line[n - 1] == '\n')
-            n--;
-        if (n > 0 && line[n - 1] == '\r')
-            n--;
-        status = wc_request_json_at(&out, &outlen, line, (size_t) n, name,
-                                    lineno, err);
-        if (out == NULL)
-        {
-            worst = cli_report(err, WC_EINTERNAL);
-            break;
-        }
-        fwrite(out, 1, outlen, stdout);
-        free(out);
-        out = NULL;
-        if (status > worst)
-            worst = status;
-        /* Each answer leaves at once, so that a program can drive the
-           batch through pipes, one request and its answer at a time; a
-           failed write ends the batch (cmd_batch reports it).  */
-        if (fflush(stdout) != 0)
-            break;
-    }
-    if (ferror(f))
-    {
-        cli_progress_clear();
-        fprintf(stderr, PROG ": %s: read error: %s\n", name, strerror(errno));
-        worst = WC_EINTERNAL;
-    }
-    free(line);
-    wc_error_clear(err);
-    return worst;
-}
 
 int
 cmd_batch(const cli_command * self, int argc, char ** argv)
@@ -99,11 +53,22 @@ cmd_batch(const cli_command * self, int argc, char ** argv)
     cli_options p;
     const char * path = "-";
     FILE * f;
-    int c, status, wst;
+    char * end;
+    long jobs = 1;
+    int c, status, wst, worst;
+    wc_error_t err;
 
     cli_options_init(&p, self);
     while ((c = cli_option(&p, argc, argv)) >= 0)
-        ;
+        if (c == OPT_JOBS)
+        {
+            errno = 0;
+            jobs = strtol(optarg, &end, 10);
+            if (*optarg == '\0' || *end != '\0' || errno != 0 || jobs < 1
+                || jobs > WC_BATCH_MAX_JOBS)
+                return cli_usage_error("batch", "--jobs takes a count from 1 "
+                                       "to 256, not '%s'", optarg);
+        }
     if (c == CLI_EXIT)
         return p.status;
     if (argc - optind > 1)
@@ -117,9 +82,15 @@ cmd_batch(const cli_command * self, int argc, char ** argv)
                 strerror(errno));
         return WC_EINPUT;
     }
-    status = answer_lines(f, cli_input_name(path));
+    wc_error_init(err);
+    status = wc_batch(&worst, stdout, f, cli_input_name(path), (int) jobs,
+                      err);
+    if (status != WC_OK)
+        cli_report(err, status);        /* reading, writing or memory */
+    wc_error_clear(err);
     if (f != stdin)
         fclose(f);
-    wst = cli_finish_output();
-    return wst != WC_OK ? wst : status;
+    /* A failed write is reported already.  */
+    wst = ferror(stdout) ? WC_EINTERNAL : cli_finish_output();
+    return wst != WC_OK ? wst : status != WC_OK ? status : worst;
 }

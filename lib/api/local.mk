@@ -3,9 +3,11 @@
 
 lib_libwc_la_SOURCES += \
 	lib/api/run.c \
-	lib/api/request.c
+	lib/api/request.c \
+	lib/api/batch.c
 wcapidir = $(pkgincludedir)/api
 wcapi_HEADERS = \
-	lib/api/request.h
+	lib/api/request.h \
+	lib/api/batch.h
 noinst_HEADERS += \
 	lib/api/run.h

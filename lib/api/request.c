@@ -15,6 +15,7 @@
 #include "api/request.h"
 #include "api/run.h"
 #include "core/json.h"
+#include "core/thread.h"
 
 /* Which commands take a key.  */
 #define ALL ((1u << _WC_NCOMMANDS) - 1)
@@ -375,6 +376,8 @@ wc_request_json_at(char ** out, size_t * outlen, const char * request,
 
     *out = NULL;
     *outlen = 0;
+    /* FLINT's caches of this thread are freed when it exits.  */
+    _wc_thread_enter();
     w.file = file != NULL ? file : "<request>";
     w.line = line >= 1 ? line : 1;
     w.err = err;
