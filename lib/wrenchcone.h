@@ -35,5 +35,6 @@
 #include "core/version.h"
 #include "core/progress.h"
 #include "api/request.h"
+#include "api/batch.h"
 
 #endif

@@ -10,7 +10,9 @@
 # the same lines as one cone per mode, and refuses a problem of over
 # 10000 modes; malformed lines, unknown or ill-typed keys and missing
 # files give the located error line and the batch goes on; the exit
-# status is the largest line's; an empty input gives nothing and status 0.
+# status is the largest line's; an empty input gives nothing and status 0;
+# --jobs=2 and 5 answer the same bytes as one thread, a bad --jobs is a
+# usage error.
 #
 # Copyright (C) 2026 the wrenchcone authors.
 # This file is part of wrenchcone, free software under the GNU General
@@ -145,6 +147,14 @@ got=$(wc -l < "$tmp/got")
 cmp -s "$tmp/got" "$tmp/got2" || fail "batch < FILE differs from batch FILE"
 "$W" batch - < "$tmp/requests" > "$tmp/got2" 2>/dev/null
 cmp -s "$tmp/got" "$tmp/got2" || fail "batch - < FILE differs from batch FILE"
+# With threads: the same bytes, in the same order, the same status.
+for j in 2 5; do
+    "$W" batch --jobs=$j "$tmp/requests" > "$tmp/got2" 2> "$tmp/err"
+    st=$?
+    [ $st -eq $worst ] || fail "batch --jobs=$j exit status $st, want $worst"
+    [ -s "$tmp/err" ] && fail "batch --jobs=$j wrote on stderr: $(head -n 3 "$tmp/err")"
+    cmp -s "$tmp/got" "$tmp/got2" || fail "batch --jobs=$j differs from batch"
+done
 
 # --all-modes: one cone line per mode of `modes`, in its order, as the
 # batch (equal to the single commands above) answers a cone request each.
@@ -234,6 +244,13 @@ grep -q "^wrenchcone: $tmp/no-such.jsonl: cannot open: " "$tmp/err" || fail "mis
 [ $? -eq 2 ] || fail "batch with two files: not a usage error"
 "$W" batch --format=json < /dev/null > "$tmp/out" 2> "$tmp/err"
 [ $? -eq 2 ] || fail "batch --format: not a usage error"
+for j in 0 257 x ''; do
+    "$W" batch --jobs=$j < /dev/null > "$tmp/out" 2> "$tmp/err"
+    st=$?
+    printf "wrenchcone: --jobs takes a count from 1 to 256, not '%s'\nTry 'wrenchcone batch --help' for more information.\n" "$j" > "$tmp/want"
+    [ $st -eq 2 ] && [ ! -s "$tmp/out" ] && cmp -s "$tmp/want" "$tmp/err" \
+        || fail "batch --jobs=$j: status $st, $(cat "$tmp/err")"
+done
 
 [ $failures -eq 0 ] || { echo "$failures failure(s)"; exit 1; }
 exit 0

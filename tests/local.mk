@@ -54,7 +54,8 @@ C_TESTS = \
 	tests/t-draw \
 	tests/t-request \
 	tests/t-decimals \
-	tests/t-foreignnum
+	tests/t-foreignnum \
+	tests/t-threads
 check_PROGRAMS += $(C_TESTS) tests/corpus-check
 LDADD = $(TEST_LIBS)
 tests_corpus_check_LDADD = lib/libwc.la

@@ -32,8 +32,8 @@
 static void
 y_label(char * buf, size_t len, slong k, slong n)
 {
-    static const char * kind[4] = { "a", "a", "c", "c" };
-    static const char * dir[4] = { "n", "t", "n", "t" };
+    static const char * const kind[4] = { "a", "a", "c", "c" };
+    static const char * const dir[4] = { "n", "t", "n", "t" };
 
     snprintf(buf, len, "%s%ld%s", kind[k / n], (long) (k % n + 1), dir[k / n]);
 }

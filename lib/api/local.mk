@@ -1,5 +1,6 @@
 # lib/api -- requests: a computing command from its arguments (given by
-# the command line, or as a JSON request) to its answer's JSON.
+# the command line, or as a JSON request) to its answer's JSON; a batch
+# of them, a line each, answered in order by one thread or several.
 
 lib_libwc_la_SOURCES += \
 	lib/api/schema.c \
@@ -9,10 +10,12 @@ lib_libwc_la_SOURCES += \
 	lib/api/runexact.c \
 	lib/api/runsets.c \
 	lib/api/rundocs.c \
-	lib/api/request.c
+	lib/api/request.c \
+	lib/api/batch.c
 wcapidir = $(pkgincludedir)/api
 wcapi_HEADERS = \
-	lib/api/request.h
+	lib/api/request.h \
+	lib/api/batch.h
 noinst_HEADERS += \
 	lib/api/schema.h \
 	lib/api/args.h \

@@ -18,6 +18,7 @@
 #include "api/schema.h"
 #include "api/runners.h"
 #include "core/json.h"
+#include "core/thread.h"
 
 /* Where the request's errors are located.  */
 typedef struct
@@ -386,6 +387,8 @@ wc_request_json_at(char ** out, size_t * outlen, const char * request,
 
     *out = NULL;
     *outlen = 0;
+    /* FLINT's caches of this thread are freed when it exits.  */
+    _wc_thread_enter();
     w.file = file != NULL ? file : "<request>";
     w.line = line >= 1 ? line : 1;
     w.err = err;

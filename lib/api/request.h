@@ -65,7 +65,11 @@ extern "C" {
    WC_EINTERNAL, err says so).  The caller frees *out with free(), or
    with wc_request_free() from code that may not share the library's
    allocator (another language's runtime).
-   Never prints, never exits; not thread-safe (the library is not).  */
+   Never prints, never exits.  Thread-safe: any number of threads may
+   answer requests at once, each answer the same bytes as alone (the
+   library holds no mutable global state; cddlib, which does, is called
+   under one lock, so its share of the work runs one thread at a time).
+   A thread's FLINT caches are freed when it exits.  */
 int wc_request_json(char ** out, size_t * outlen, const char * request,
                     size_t len, wc_error_t err);
 

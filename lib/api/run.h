@@ -124,6 +124,7 @@ typedef struct _wc_request_struct
     const char * graph_wrench;  /* draw --wrench=FX,FY,TAU, as written */
     const char * output;        /* draw, report: -o FILE */
     const char * batch;         /* batch's FILE, "-" by default */
+    long jobs;                  /* batch --jobs */
     char * owned[8];            /* copies this record owns: FX,FY,TAU
                                    cut, names, standard input's text */
 }

@@ -18,6 +18,7 @@
 #include "api/schema.h"
 #include "api/run.h"
 #include "core/random.h"
+#include "api/batch.h"
 
 /* The rules between values that no single row can state.  Messages name
    the options as the request or the command line wrote them.  */
@@ -499,6 +500,13 @@ static const _wc_arg batch_operands[] = {
 };
 
 static const _wc_arg batch_options[] = {
+    { "jobs", _WC_ARG_COUNT, "N", NULL, "takes a count from 1 to 256", "1",
+      1, WC_BATCH_MAX_JOBS,
+      offsetof(_wc_request, jobs), _WC_ARG_CLI, 0,
+      "answer with N threads (1 to 256; default 1); the\n"
+      "answers are the same, in the same order, each still\n"
+      "written once it and all earlier ones are done",
+      NULL },
     { NULL }
 };
 
@@ -669,9 +677,10 @@ const _wc_command_schema _wc_schema[] = {
       "command prints with --format=json, or {\"error\": {\"message\", \"file\",\n"
       "\"line\", \"column\", \"status\"}} and the batch goes on.  Blank lines are\n"
       "skipped.  Each answer is written as soon as it is computed, so a program\n"
-      "can send one request and read its answer through pipes.  Commands: cone,\n"
-      "modes, feasible, classify, stability, plan, compare; the keys of each are\n"
-      "in wrenchcone(1), REQUESTS.\n"
+      "can send one request and read its answer through pipes.  Every command\n"
+      "but batch is a request; the keys of each are in wrenchcone(1), REQUESTS,\n"
+      "and 'wrenchcone COMMAND ... --print-request' prints the request of a\n"
+      "command line.\n"
       "\n"
       "Exit status: 0 when every request succeeded, else the largest status of\n"
       "a line (1 bad input, 2 bad request, 3 internal, 4 a comparison beyond\n"

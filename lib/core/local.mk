@@ -1,5 +1,6 @@
 # lib/core -- errors, the problem and its reader, numbers, JSON reading,
-# reproducible random problems, versions, the progress hook.
+# reproducible random problems, versions, the progress hook, what a thread
+# needs of its own.
 
 # error.c, text.c, readall.c, json.c and jsontree.c are the certificate checker's
 # too: they go into lib/libwccheck.la (lib/check/local.mk), which
@@ -22,7 +23,8 @@ lib_libwc_la_SOURCES += \
 	lib/core/randdegen.c \
 	lib/core/random.c \
 	lib/core/version.c \
-	lib/core/progress.c
+	lib/core/progress.c \
+	lib/core/thread.c
 wccoredir = $(pkgincludedir)/core
 wccore_HEADERS = \
 	lib/core/error.h \
@@ -37,4 +39,5 @@ noinst_HEADERS += \
 	lib/core/polygon.h \
 	lib/core/lexer.h \
 	lib/core/randgen.h \
-	lib/core/tick.h
+	lib/core/tick.h \
+	lib/core/thread.h

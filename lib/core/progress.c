@@ -8,8 +8,10 @@
 
 #include "core/tick.h"
 
-static wc_progress_fn hook = NULL;
-static void * hook_ctx = NULL;
+/* The calling thread's hook: threads computing side by side report to
+   hooks of their own, or to none.  */
+static _Thread_local wc_progress_fn hook = NULL;
+static _Thread_local void * hook_ctx = NULL;
 
 void
 wc_progress_set(wc_progress_fn fn, void * ctx)

@@ -22,9 +22,11 @@ extern "C" {
 typedef void (* wc_progress_fn)(void * ctx, const char * stage, slong done,
                                 slong total);
 
-/* Install fn with its ctx (fn NULL: no reports, the default).  The hook
-   is process-wide: set it before a computation, not during one, and not
-   from two threads.  */
+/* Install fn with its ctx for the calling thread (fn NULL: no reports,
+   the default of every thread).  A computation reports to the hook of
+   the thread that runs it, so threads computing side by side neither see
+   each other's reports nor race on the hook; a thread that wc_batch
+   starts has none.  */
 void wc_progress_set(wc_progress_fn fn, void * ctx);
 
 #ifdef __cplusplus

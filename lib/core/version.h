@@ -13,8 +13,9 @@ extern "C" {
 
 /* Optional one-time set-up of the exact backends (cddlib's global
    constants).  Every library function that needs it calls it; it is
-   idempotent, so callers that use cddlib themselves call this instead of
-   dd_set_global_constants().  */
+   idempotent and safe from any thread (pthread_once), so callers that use
+   cddlib themselves call this instead of dd_set_global_constants().
+   Defined, with wc_cdd_version, in exact/cddbridge.c.  */
 void wc_init(void);
 
 /* Version strings: ours, and those of the GMP, FLINT and cddlib we run

@@ -11,6 +11,18 @@
    contains (the ddf_ functions, used by floatcone.c only); dd_NoError is
    not 0; cddlib is not thread-safe.
 
+   Threads.  dd_set_global_constants() writes cddlib's constants (dd_zero,
+   dd_one, ..., the choice of LP solver), which are only read after: it
+   runs once, under pthread_once (wc_init).  But the LP and the double
+   description keep scratch arrays in static variables of their functions
+   (dd_LPSolve's and dd_AddNewHalfspace's, among others, reallocated when
+   the dimension changes) and count pivots in globals (dd_statBApivots,
+   ...): two threads inside cddlib free each other's arrays.  So every
+   entry point here holds one lock, cdd_lock, from its first cddlib call
+   to its last; the work around cddlib (our kernels, FLINT, the rest of a
+   request) runs in parallel.  A program that calls cddlib itself, beside
+   the library, must not do so while library calls run in other threads.
+
    The two conversions are written once, in cddconv.inc, and included
    here for each build; the LPs differ between the builds and are
    written out.  */
@@ -18,6 +30,7 @@
 #include <config.h>
 
 #include <math.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -29,6 +42,48 @@
 
 #include "core/version.h"
 #include "exact/cddbridge.h"
+
+/* Set once by wc_init, read only after.  */
+static pthread_once_t cdd_once = PTHREAD_ONCE_INIT;
+/* Held by whoever is inside cddlib.  */
+static pthread_mutex_t cdd_lock = PTHREAD_MUTEX_INITIALIZER;
+
+static void
+cdd_constants(void)
+{
+    dd_set_global_constants();
+    /* ddf_zero, the double build's tolerance, is used by floatcone.c (the
+       GMP build's dd_set_global_constants sets it too, in cddlib 0.94m;
+       once more is harmless).  */
+    ddf_set_global_constants();
+}
+
+void
+wc_init(void)
+{
+    pthread_once(&cdd_once, cdd_constants);
+}
+
+const char *
+wc_cdd_version(void)
+{
+    return dd_DDVERSION " (" dd_ARITHMETIC ")";
+}
+
+/* Into cddlib, and out of it: every entry point below, around all of
+   its cddlib calls.  */
+static void
+cdd_enter(void)
+{
+    wc_init();
+    pthread_mutex_lock(&cdd_lock);
+}
+
+static void
+cdd_leave(void)
+{
+    pthread_mutex_unlock(&cdd_lock);
+}
 
 /* The error record of a failed cddlib call; build names the arithmetic
    (" (double)" or ""), why the failure when known.  */
@@ -104,7 +159,7 @@ _wc_cdd_lp_min(fmpq * x, fmpq_t val, const fmpq_mat_t A, const fmpq * b,
     dd_ErrorType e = dd_NoError;
     int res = -1;
 
-    wc_init();
+    cdd_enter();
     M = dd_CreateMatrix(m, nv + 1);
     if (M == NULL)
     {
@@ -157,6 +212,7 @@ cleanup:
         dd_FreeLPData(lp);
     if (M != NULL)
         dd_FreeMatrix(M);
+    cdd_leave();
     return res;
 }
 
@@ -279,7 +335,7 @@ _wc_cddf_lp_feasible(const d_mat_t H0, const d_mat_t H1, slong d,
     ddf_ErrorType e = ddf_NoError;
     int res = -1;
 
-    wc_init();
+    cdd_enter();
     /* Row 0 is 1 >= 0, so that cddlib never sees an empty system; then
        (0, -h) for h.x <= 0 and (-1, -h) for h.x <= -1.  Objective 0.  */
     M = ddf_CreateMatrix(1 + n0 + n1, d + 1);
@@ -332,5 +388,6 @@ cleanup:
         ddf_FreeLPData(lp);
     if (M != NULL)
         ddf_FreeMatrix(M);
+    cdd_leave();
     return res;
 }

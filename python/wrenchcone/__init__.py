@@ -28,8 +28,9 @@ The library is found, in this order: the file named by the environment
 variable WRENCHCONE_LIB; in the source tree, the build holding this
 package (lib/.libs/ or _build/lib/.libs/ at the top of the tree), or,
 installed, the installed library (make install writes its directory
-below); then the system's search (ctypes.util.find_library).  The library is not thread-safe:
-calls from several threads are serialized here.  See doc/python.md.
+below); then the system's search (ctypes.util.find_library).  The library is thread-safe,
+and ctypes lets go of the interpreter lock during a call, so threads may
+call the functions at once.  See doc/python.md.
 """
 
 import ctypes
@@ -143,6 +144,11 @@ _lock = threading.Lock()
 
 
 def _load():
+    with _lock:
+        return _load_locked()
+
+
+def _load_locked():
     global _lib, _lib_path
     if _lib is not None:
         return _lib
@@ -199,22 +205,20 @@ def request_json(text):
     out = ctypes.c_void_p()
     outlen = ctypes.c_size_t()
     err = _ErrorRecord()
-    with _lock:
-        lib.wc_error_init(ctypes.byref(err))
+    lib.wc_error_init(ctypes.byref(err))
+    try:
+        status = lib.wc_request_json(ctypes.byref(out), ctypes.byref(outlen),
+                                     data, len(data), ctypes.byref(err))
+        if out.value is None:
+            # out of memory: the error record alone
+            raise InternalError((err.message or b"out of memory")
+                                .decode("utf-8", "replace"))
         try:
-            status = lib.wc_request_json(ctypes.byref(out),
-                                         ctypes.byref(outlen), data,
-                                         len(data), ctypes.byref(err))
-            if out.value is None:
-                # out of memory: the error record alone
-                raise InternalError((err.message or b"out of memory")
-                                    .decode("utf-8", "replace"))
-            try:
-                answer = ctypes.string_at(out.value, outlen.value)
-            finally:
-                lib.wc_request_free(out)
+            answer = ctypes.string_at(out.value, outlen.value)
         finally:
-            lib.wc_error_clear(ctypes.byref(err))
+            lib.wc_request_free(out)
+    finally:
+        lib.wc_error_clear(ctypes.byref(err))
     return status, answer.decode("utf-8").rstrip("\n")
 
 
@@ -369,14 +373,13 @@ def schema():
         lib = _load()
         out = ctypes.c_void_p()
         outlen = ctypes.c_size_t()
-        with _lock:
-            if lib.wc_request_schema(ctypes.byref(out),
-                                     ctypes.byref(outlen)) != 0:
-                raise InternalError("out of memory")
-            try:
-                text = ctypes.string_at(out.value, outlen.value)
-            finally:
-                lib.wc_request_free(out)
+        if lib.wc_request_schema(ctypes.byref(out),
+                                 ctypes.byref(outlen)) != 0:
+            raise InternalError("out of memory")
+        try:
+            text = ctypes.string_at(out.value, outlen.value)
+        finally:
+            lib.wc_request_free(out)
         _schema_doc = json.loads(text.decode("utf-8"))
     return _schema_doc
 
