@@ -511,10 +511,9 @@ face_facet(const wc_cone_t B, const wc_face_struct * F,
     _wc_zrow key, * hit;
 
     _wc_zvec3_cross(h, a, b);
-    _fmpz_vec_content(t, h, 3);
-    if (fmpz_is_zero(t))
+    if (_fmpz_vec_is_zero(h, 3))
         return -1;
-    _fmpz_vec_scalar_divexact_fmpz(h, h, 3, t);
+    _wc_zvec3_primitive(h, t);
     /* the sign: h.x <= 0 on B, and < 0 at a ray off F */
     for (c = 0; c < fmpz_mat_nrows(B->rays); c++)
         if (c != F->rays[0] && c != F->rays[1])
