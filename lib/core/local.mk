@@ -26,6 +26,7 @@ lib_libwc_la_SOURCES += \
 wccoredir = $(pkgincludedir)/core
 wccore_HEADERS = \
 	lib/core/error.h \
+	lib/core/limits.h \
 	lib/core/problem.h \
 	lib/core/random.h \
 	lib/core/version.h \

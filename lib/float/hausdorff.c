@@ -40,6 +40,7 @@
 #include <flint/fmpq_vec.h>
 #include <flint/fmpz_vec.h>
 
+#include "core/limits.h"
 #include "float/compare.h"
 #include "float/angle.h"
 #include "exact/vec3.h"
@@ -214,15 +215,6 @@ max_angle_to_plane(double * w, const wc_cone_t K, const fmpq * n)
     _fmpq_vec_clear(m, 3);
     return a;
 }
-
-/* minimax_polar costs k^4 with k rays of B: above these many rays it
-   tries fewer candidates (triples, then pairs, then the single p_i: k^2
-   per face of K), and above the last only K's generators (k each), and
-   its answer is then only a lower bound -- still at least pi/2, so it
-   still exceeds every tolerance wc_compare accepts.  */
-#define WC_MINIMAX_TRIPLES 48
-#define WC_MINIMAX_PAIRS 400
-#define WC_MINIMAX_SINGLES 1000
 
 typedef struct
 {
