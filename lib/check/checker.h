@@ -137,9 +137,6 @@ typedef enum
 }
 wc_check_kind;
 
-#define WC_CHECK_KIND_MODE "mode-feasibility"
-#define WC_CHECK_KIND_STABILITY "strong-stability"
-
 typedef enum
 {
     WC_CHECK_STRING,
@@ -442,10 +439,6 @@ int _wc_check_stability_certificate(wc_check_reader * c,
 
 /* ------------------------------------------------------------------ */
 /* Stability-set certificates (setread.c, setcheck.c).                 */
-
-#define WC_CHECK_KIND_SET "stability-set"
-#define WC_CHECK_KIND_PLAN "plan-goal"
-#define WC_CHECK_KIND_CRIT "critical-friction"
 
 /* The most work on a tree the checker does: rays of the regions cut, and
    rays times constraints at the leaves (far more than a certificate of

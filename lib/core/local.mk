@@ -32,6 +32,7 @@ wccore_HEADERS = \
 	lib/core/version.h \
 	lib/core/progress.h
 noinst_HEADERS += \
+	lib/core/certkind.h \
 	lib/core/json.h \
 	lib/core/text.h \
 	lib/core/readall.h \
