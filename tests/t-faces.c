@@ -24,6 +24,7 @@
 
 #include "wrenchcone.h"
 #include "check/checker.h"
+#include "check/faces.h"
 #include "check/verify.h"
 #include "ref-faces.h"
 #include "testutil.h"

@@ -26,6 +26,10 @@
 
 #include "core/certkind.h"
 #include "check/checker.h"
+#include "check/feasible.h"
+#include "check/stabcheck.h"
+#include "check/setcheck.h"
+#include "check/critcheck.h"
 #include "check/verify.h"
 
 /* Parse text and read the kind of its certificate into *kind, c made
