@@ -13,6 +13,7 @@
 #define WRENCHCONE_H
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/problem.h"
 #include "model/mode.h"
 #include "model/model.h"

@@ -28,6 +28,7 @@
 #include <gmp.h>
 
 #include "check/verify.h"
+#include "core/limits.h"
 #include "cli-base.h"
 
 #define PROG "wrenchcone-verify"
@@ -120,7 +121,7 @@ main(int argc, char ** argv)
         return status;
     path = argv[optind];
     wc_error_init(err);
-    status = cli_read_all(&text, &len, path, WC_CERTIFICATE_MAX_BYTES, err);
+    status = cli_read_all(&text, &len, path, WC_CERT_MAX_BYTES, err);
     if (status == WC_OK)
         status = wc_verify_fprint(stdout, &holds, text, len,
                                   cli_input_name(path), json, err);

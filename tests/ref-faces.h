@@ -10,7 +10,7 @@
 
 #include <stddef.h>
 
-#include "check/checker.h"
+#include "check/faces.h"
 
 #ifdef __cplusplus
 extern "C" {

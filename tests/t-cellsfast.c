@@ -2,7 +2,7 @@
    chamber multiplier without divisions, signs sorted in place) against
    the former build kept in old-cells.c, _wc_angle_cmp against the fmpz
    cross product, and the sign bitsets of the plan
-   (planbits.c, built a word of cells at a time) against the signs.
+   (cellbits.c, built a word of cells at a time) against the signs.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General

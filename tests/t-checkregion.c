@@ -35,6 +35,7 @@
 #include "exact/vec3.h"
 #include "exact/region3.h"
 #include "check/checker.h"
+#include "check/region.h"
 #include "testutil.h"
 
 /* ------------------------------------------------------------------ */

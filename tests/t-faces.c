@@ -28,6 +28,7 @@
 
 #include "wrenchcone.h"
 #include "check/checker.h"
+#include "check/faces.h"
 #include "check/verify.h"
 #include "old-faces.h"
 #include "ref-faces.h"

@@ -43,7 +43,7 @@ check_cell(const wc_problem_t P, const ulong * bits, const wc_cone_key * K,
 {
     int want, key, got = BIT(bits, i);
 
-    _wc_plan_cell_point(g, A, i);
+    _wc_cellset_point(g, A, i);
     want = wc_cone_contains(K->C, g);
     key = _wc_cone_key_contains(K, A, i, g);
     checked++;
@@ -152,7 +152,7 @@ check_plan(const wc_problem_t P, slong limit)
         fmpq_init(g + k);
     for (i = 0; i < R->cells->count; i++)
     {
-        _wc_plan_cell_point(g, R->cells, i);
+        _wc_cellset_point(g, R->cells, i);
         for (k = 0; k < nn; k++)
         {
             in[i * nn + k] = wc_cone_contains(R->cones + k, g);
@@ -355,7 +355,7 @@ check_problem(const wc_problem_t P)
     if (_wc_plan_needed_cones(C, T, P, err) != WC_OK)
         wctest_fail_problem(P, NULL, "needed cones: %s", err->message);
     for (k = 0; k < T->nneeded; k++)
-        _wc_plan_add_planes(planes, &np, C + k);
+        _wc_cellset_add_planes(planes, &np, C + k);
     if (P->n <= 3)
     {
         no = _wc_plan_pow3(P->n);
@@ -363,10 +363,10 @@ check_problem(const wc_problem_t P)
         if (_wc_plan_outcome_cones(O, no, P, err) != WC_OK)
             wctest_fail_problem(P, NULL, "outcome cones: %s", err->message);
         for (k = 0; k < no; k++)
-            _wc_plan_add_planes(planes, &np, O + k);
+            _wc_cellset_add_planes(planes, &np, O + k);
     }
     status = WC_OK;
-    _wc_plan_cells_build(A, &status, planes, np, err);
+    _wc_cellset_build(A, &status, planes, np, err);
     if (status != WC_OK)
         wctest_fail_problem(P, NULL, "cells: %s", err->message);
     check_cones(P, C, T->nneeded, A);

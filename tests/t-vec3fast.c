@@ -8,7 +8,11 @@
    The references below (ref_cross, ref_dot, ref_primitive) are the
    deliberate independent copies of the fmpz arithmetic the fast paths
    replace: plain fmpz_mul and fmpz_submul, and the content by fmpz_gcd;
-   check_sqmul's reference is plain fmpz_mul and fmpz_cmp.
+   check_sqmul's reference is plain fmpz_mul and fmpz_cmp.  The line's
+   canonical vector is checked against the primitive one turned by its
+   first nonzero entry, and the primitive vector of a rational vector
+   against the one of its numerators times the product of all the
+   denominators (not their lcm).
    Entries are drawn of every size: zero, tiny, up to the largest word
    fmpz (2^62 - 1), just past it, and far past a word; vectors repeat,
    negate, scale and share entries (degenerate cross products: zero,
@@ -22,6 +26,7 @@
 #include <string.h>
 
 #include <flint/fmpz_vec.h>
+#include <flint/fmpq_vec.h>
 
 #include "testutil.h"
 #include "exact/vec3.h"
@@ -123,6 +128,67 @@ ref_primitive(fmpz * h)
     fmpz_clear(g);
 }
 
+/* _wc_zvec3_canonical of a multiple of the primitive vector h.  */
+static void
+check_canonical(const fmpz * h)
+{
+    fmpz * v = _fmpz_vec_init(3), * w = _fmpz_vec_init(3);
+    fmpz_t t;
+    slong j, s = wctest_randint(-9, 9);
+    int got, want;
+
+    fmpz_init(t);
+    _fmpz_vec_scalar_mul_si(v, h, 3, s == 0 ? 1 : s);
+    _fmpz_vec_set(w, h, 3);
+    for (j = 0; j < 3 && fmpz_is_zero(w + j); j++)
+        ;
+    want = j == 3 ? 0 : fmpz_sgn(v + j) < 0 ? -1 : 1;
+    if (j < 3 && fmpz_sgn(w + j) < 0)
+        _fmpz_vec_neg(w, w, 3);
+    got = _wc_zvec3_canonical(v, t);
+    if (got != want || !_fmpz_vec_equal(v, w, 3))
+        wctest_fail("canonical vector differs (%d, the reference %d)", got,
+                    want);
+    _fmpz_vec_clear(v, 3);
+    _fmpz_vec_clear(w, 3);
+    fmpz_clear(t);
+}
+
+/* _wc_qvec_primitive of the rational vector a / b (b's zero entries taken
+   as 1).  */
+static void
+check_qvec(const fmpz * a, const fmpz * b)
+{
+    fmpq * x = _fmpq_vec_init(3);
+    fmpz * v = _fmpz_vec_init(3), * w = _fmpz_vec_init(3);
+    fmpz_t p;
+    slong j;
+
+    fmpz_init_set_ui(p, 1);
+    for (j = 0; j < 3; j++)
+    {
+        fmpz_set(fmpq_denref(x + j), b + j);
+        if (fmpz_is_zero(b + j))
+            fmpz_one(fmpq_denref(x + j));
+        fmpz_set(fmpq_numref(x + j), a + j);
+        fmpq_canonicalise(x + j);
+        fmpz_mul(p, p, fmpq_denref(x + j));
+    }
+    for (j = 0; j < 3; j++)
+    {
+        fmpz_divexact(w + j, p, fmpq_denref(x + j));
+        fmpz_mul(w + j, w + j, fmpq_numref(x + j));
+    }
+    ref_primitive(w);
+    _wc_qvec_primitive(v, x, 3);
+    if (!_fmpz_vec_equal(v, w, 3))
+        wctest_fail("primitive vector of a rational vector differs");
+    _fmpq_vec_clear(x, 3);
+    _fmpz_vec_clear(v, 3);
+    _fmpz_vec_clear(w, 3);
+    fmpz_clear(p);
+}
+
 /* _wc_z_sqmul_cmp against fmpz: random sizes, equal sides, and sides
    one multiplier apart.  */
 static void
@@ -208,10 +274,12 @@ check_one(void)
     if (wctest_chance(1, 2))
         _fmpz_vec_scalar_mul_si(d, a, 3, wctest_randint(-40, 40));
     _fmpz_vec_set(c, d, 3);
-    _wc_zvec3_primitive_fast(c, t);
+    _wc_zvec3_primitive(c, t);
     ref_primitive(d);
     if (!_fmpz_vec_equal(c, d, 3))
         wctest_fail("primitive vector differs");
+    check_canonical(d);
+    check_qvec(a, b);
     _fmpz_vec_clear(a, 3);
     _fmpz_vec_clear(b, 3);
     _fmpz_vec_clear(c, 3);

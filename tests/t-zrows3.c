@@ -6,7 +6,7 @@
    Public License, version 2 or (at your option) any later version.
 
    The references below are the deliberate independent copies: the
-   content by _fmpz_vec_content; the distinct rows by qsort with
+   distinct rows by qsort with
    fmpz_cmp and a plain scan; R^3 by the general conversion
    (wc_cone_set_generators).  Rows are random with entries of a few bits,
    near the word limit or past it, with zero, repeated, opposite,
@@ -81,30 +81,6 @@ cmp_rows(const void * a, const void * b)
         if ((c = fmpz_cmp(x + j, y + j)) != 0)
             return c;
     return 0;
-}
-
-static void
-check_primitive(const fmpz * A, slong k)
-{
-    fmpz * x = _fmpz_vec_init(3), * y = _fmpz_vec_init(3);
-    fmpz_t g;
-    slong i;
-
-    fmpz_init(g);
-    for (i = 0; i < k; i++)
-    {
-        _fmpz_vec_set(x, A + 3 * i, 3);
-        _fmpz_vec_set(y, x, 3);
-        _wc_zrow3_primitive(x, g);
-        _fmpz_vec_content(g, y, 3);
-        if (!fmpz_is_zero(g))
-            _fmpz_vec_scalar_divexact_fmpz(y, y, 3, g);
-        if (!_fmpz_vec_equal(x, y, 3))
-            wctest_fail("_wc_zrow3_primitive differs from the content");
-    }
-    fmpz_clear(g);
-    _fmpz_vec_clear(x, 3);
-    _fmpz_vec_clear(y, 3);
 }
 
 static void
@@ -213,7 +189,6 @@ main(void)
             continue;
         A = _fmpz_vec_init(3 * k);
         rand_rows(A, k, wctest_chance(1, 2));
-        check_primitive(A, k);
         check_distinct(A, k);
         check_space(A, k);
         /* a, b, c at the positions tried first and d = -(a + b + c)

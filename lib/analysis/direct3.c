@@ -131,7 +131,8 @@ point_normal(fmpz * R, fmpz * N, const wc_fixel_struct * f, const fmpz * O,
         && SMALL(d0) && SMALL(c1) && SMALL(d1) && SMALL(O) && SMALL(O + 1)
         && SMALL(Do))
     {
-        slong gp = (slong) _wc_zrow3_gcd_ui(*b0, *b1), gn = (slong) _wc_zrow3_gcd_ui(*d0, *d1);
+        slong gp = (slong) _wc_gcd_ui(*b0, *b1);
+        slong gn = (slong) _wc_gcd_ui(*d0, *d1);
         wide_t r[3], n[2], x0, x1;
 
         /* Dp = lcm(b0, b1) = (b0 / gp) b1 < 2^124: the products below
@@ -188,7 +189,7 @@ column(fmpz * c, const fmpz * D, const fmpz * R, fmpz_t g, int prim,
         if (set_wide(c, x, 3))
         {
             if (prim)
-                _wc_zrow3_primitive(c, g);
+                _wc_zvec3_primitive(c, g);
             return;
         }
     }
@@ -198,7 +199,7 @@ column(fmpz * c, const fmpz * D, const fmpz * R, fmpz_t g, int prim,
     fmpz_mul(c + 2, R + 0, D + 1);
     fmpz_submul(c + 2, R + 1, D + 0);
     if (prim)
-        _wc_zrow3_primitive(c, g);
+        _wc_zvec3_primitive(c, g);
     if (sign < 0)
         _fmpz_vec_neg(c, c, 3);
 }
@@ -319,7 +320,7 @@ eq_rank(ws_struct * w, fmpz * u)
             _wc_zvec3_cross(u, e1, x);
             r = _fmpz_vec_is_zero(u, 3) ? 1 : 2;
             if (r == 2)
-                _wc_zrow3_primitive(u, SCRATCH(w));
+                _wc_zvec3_primitive(u, SCRATCH(w));
         }
         else if (_wc_zvec3_dot_sgn_fast(u, x, SCRATCH(w)) != 0)
             r = 3;
@@ -364,7 +365,7 @@ put_image(ws_struct * w, const fmpz * x, int sign)
     fmpz_mul(y + 0, w->ma, x + 0);
     fmpz_mul(y + 1, w->ma, x + 1);
     fmpz_mul(y + 2, w->mb, x + 2);
-    _wc_zrow3_primitive(y, SCRATCH(w));
+    _wc_zvec3_primitive(y, SCRATCH(w));
     if (sign < 0)
         _fmpz_vec_neg(y, y, 3);
 }
@@ -429,7 +430,7 @@ plane_of_rows(ws_struct * w, fmpz * u)
             r = -1;
             goto done;
         }
-    _wc_zrow3_primitive(u, t);
+    _wc_zvec3_primitive(u, t);
     for (i = 1; i < w->nh; i++)
     {
         const fmpz * x = w->H + 3 * i;

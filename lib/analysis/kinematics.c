@@ -25,30 +25,6 @@
 #include "analysis/modeswalk.h"
 
 
-/* v (len entries) := the primitive integer vector on the ray of x.  */
-static void
-fmpq_vec_primitive(fmpz * v, const fmpq * x, slong len)
-{
-    fmpz_t den, c;
-    slong j;
-
-    fmpz_init(den);
-    fmpz_init(c);
-    fmpz_one(den);
-    for (j = 0; j < len; j++)
-        fmpz_lcm(den, den, fmpq_denref(x + j));
-    for (j = 0; j < len; j++)
-    {
-        fmpz_divexact(c, den, fmpq_denref(x + j));
-        fmpz_mul(v + j, fmpq_numref(x + j), c);
-    }
-    _fmpz_vec_content(c, v, len);
-    if (!fmpz_is_zero(c))
-        _fmpz_vec_scalar_divexact_fmpz(v, v, len, c);
-    fmpz_clear(den);
-    fmpz_clear(c);
-}
-
 void
 _wc_modes_columns(fmpz_mat_t a, const wc_problem_t P)
 {
@@ -60,7 +36,7 @@ _wc_modes_columns(fmpz_mat_t a, const wc_problem_t P)
     wc_model_J(J, P);
     fmpq_mat_transpose(Jt, J);
     for (k = 0; k < K; k++)
-        fmpq_vec_primitive(WC_ROW(a, k), WC_ROW(Jt, k), 3);
+        _wc_qvec_primitive(WC_ROW(a, k), WC_ROW(Jt, k), 3);
     fmpq_mat_clear(J);
     fmpq_mat_clear(Jt);
 }
@@ -243,7 +219,7 @@ wc_feasible(wc_certificate_t C, const wc_problem_t P, const char * mode,
     else if (found)
     {
         C->feasible = 1;
-        fmpq_vec_primitive(C->witness, z, 3);
+        _wc_qvec_primitive(C->witness, z, 3);
         if (!wc_certificate_check(C))
             status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                   "internal error: the witness of %s fails",
@@ -251,7 +227,7 @@ wc_feasible(wc_certificate_t C, const wc_problem_t P, const char * mode,
     }
     else
     {
-        fmpq_vec_primitive(C->mult, y, m);
+        _wc_qvec_primitive(C->mult, y, m);
         if (!wc_certificate_check(C))
             status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
                                   "internal error: certificate of %s fails",

@@ -21,6 +21,7 @@
 #include <flint/fmpz_mat.h>
 
 #include "core/problem.h"
+#include "core/limits.h"
 #include "exact/relation.h"
 
 #ifdef __cplusplus
@@ -70,8 +71,6 @@ void wc_modes_clear(wc_modes_t M);
    the output: O(m^2 + n) modes of n letters (a near fixel's plane may
    cross K anywhere, a touching fixel's tangent plane only K's facet of
    that fixel), m^2 n bytes where every fixel is near.  */
-#define WC_MODES_MAX_FIXELS 1000
-#define WC_MODES_MAX_NEAR 150
 int wc_modes_enumerate(wc_modes_t M, const wc_problem_t P, wc_error_t err);
 
 /* The certificate of one mode: either a witness twist (primitive

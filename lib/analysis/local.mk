@@ -15,13 +15,14 @@ lib_libwc_la_SOURCES += \
 	lib/analysis/stabmodel.c \
 	lib/analysis/facesys.c \
 	lib/analysis/classify.c \
+	lib/analysis/cellset.c \
+	lib/analysis/cellbits.c \
 	lib/analysis/stability.c \
 	lib/analysis/setcert.c \
 	lib/analysis/stabcert.c \
 	lib/analysis/plancert.c \
 	lib/analysis/planstr.c \
 	lib/analysis/plancones.c \
-	lib/analysis/planbits.c \
 	lib/analysis/plangraph.c \
 	lib/analysis/plan.c \
 	lib/analysis/robust.c \
@@ -39,6 +40,7 @@ noinst_HEADERS += \
 	lib/analysis/direct3.h \
 	lib/analysis/zrows3.h \
 	lib/analysis/planparts.h \
+	lib/analysis/cellset.h \
 	lib/analysis/modeswalk.h \
 	lib/analysis/stabmodel.h \
 	lib/analysis/facesys.h \

@@ -107,7 +107,7 @@ plan_cells(wc_plan_t R, const wc_problem_t P, int complete, wc_error_t err)
     if ((status = _wc_plan_needed_cones(R->cones, R->T, P, err)) != WC_OK)
         goto cleanup;
     for (k = 0; k < nn; k++)
-        _wc_plan_add_planes(planes, &np, R->cones + k);
+        _wc_cellset_add_planes(planes, &np, R->cones + k);
 
     /* The goal state: every fixel touching.  */
     if ((status = wc_problem_set(Q, P)) != WC_OK)
@@ -116,11 +116,11 @@ plan_cells(wc_plan_t R, const wc_problem_t P, int complete, wc_error_t err)
         Q->fixels[i].state = WC_TOUCHING;
     if ((status = wc_stability(R->stab, Q, err)) != WC_OK)
         goto cleanup;
-    _wc_plan_add_planes(planes, &np, R->stab->weak);
+    _wc_cellset_add_planes(planes, &np, R->stab->weak);
     for (k = 0; k < R->stab->nmoving; k++)
-        _wc_plan_add_planes(planes, &np, R->stab->moving + k);
+        _wc_cellset_add_planes(planes, &np, R->stab->moving + k);
     for (k = 0; k < R->stab->nunion; k++)
-        _wc_plan_add_planes(planes, &np, R->stab->paper_union + k);
+        _wc_cellset_add_planes(planes, &np, R->stab->paper_union + k);
 
     if (complete)
     {
@@ -131,9 +131,9 @@ plan_cells(wc_plan_t R, const wc_problem_t P, int complete, wc_error_t err)
                                              err)) != WC_OK)
             goto cleanup;
         for (k = 0; k < R->noutcomes; k++)
-            _wc_plan_add_planes(planes, &np, R->outcomes + k);
+            _wc_cellset_add_planes(planes, &np, R->outcomes + k);
     }
-    _wc_plan_cells_build(R->cells, &status, planes, np, err);
+    _wc_cellset_build(R->cells, &status, planes, np, err);
 cleanup:
     fmpz_mat_clear(planes);
     wc_problem_clear(Q);
@@ -152,7 +152,7 @@ plan_eq25(wc_plan_t R, const int * goal, fmpq * g)
     {
         if (!goal[i])
             continue;
-        _wc_plan_cell_point(g, R->cells, i);
+        _wc_cellset_point(g, R->cells, i);
         if (R->goal_in_strong && !wc_set_contains(R->stab->strong, g))
         {
             R->goal_in_strong = 0;
@@ -286,7 +286,7 @@ _wc_plan_exact(int * exact, ulong * any, slong count, slong ncells,
     return ok;
 }
 
-/* The needed cones' cells for _wc_plan_exact (planbits.c).  */
+/* The needed cones' cells for _wc_plan_exact (cellbits.c).  */
 typedef struct
 {
     wc_cone_key * keys;
@@ -405,7 +405,7 @@ plan_accepted(wc_plan_t R, const wc_problem_t P, const int * goal,
         {
             /* cells come by dimension: keep the last, a chamber if any */
             R->has_extra = 1;
-            _wc_plan_cell_point(R->extra, R->cells, i);
+            _wc_cellset_point(R->extra, R->cells, i);
         }
         if (goal[i] && !acc[i])
         {

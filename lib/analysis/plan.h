@@ -63,6 +63,7 @@
 #include <flint/fmpq.h>
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/problem.h"
 #include "exact/cone.h"
 #include "exact/cells.h"
@@ -72,16 +73,6 @@
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* Largest n accepted: 3^n cones for the complete plan, n 2^(n-1) for the
-   conservative one.  */
-#define WC_PLAN_MAX_FIXELS 10
-#define WC_PLAN_MAX_FIXELS_COMPLETE 6
-
-/* The most fixels a plan's certificate (and a critical bracket's) is
-   written for: its cells grow fast with n (about 20 MB at 7 fixels), and
-   wrenchcone verify reads at most 64 MB.  */
-#define WC_PLAN_CERT_MAX_FIXELS 7
 
 /* Why a wrench is rejected by the complete plan.  */
 typedef enum
@@ -236,12 +227,11 @@ void wc_critical_clear(wc_critical_t C);
 int wc_plan_critical(wc_critical_t C, const wc_problem_t P,
                      const fmpq_t width, const fmpq_t max, wc_error_t err);
 
-/* The bounds that keep the search to at most 2 + 32 + 128 plans: the
-   width is at least 2^-96 (about 1.3e-29) and max at most 2^32;
-   wc_plan_critical refuses others with WC_EINPUT.  The predicates say
-   whether a value is within them (and positive).  */
-#define WC_CRITICAL_MIN_WIDTH_EXP 96
-#define WC_CRITICAL_MAX_FRICTION_EXP 32
+/* The bounds that keep the search to at most 2 + 32 + 128 plans
+   (WC_CRITICAL_MIN_WIDTH_EXP, WC_CRITICAL_MAX_FRICTION_EXP): the width is
+   at least 2^-96 (about 1.3e-29) and max at most 2^32; wc_plan_critical
+   refuses others with WC_EINPUT.  The predicates say whether a value is
+   within them (and positive).  */
 int wc_critical_width_ok(const fmpq_t width);
 int wc_critical_max_ok(const fmpq_t max);
 

@@ -126,8 +126,8 @@ goal_empty(int * empty, fmpq * witness, const wc_plan_strings_t T,
     if ((status = _wc_plan_needed_cones(C, T, Q, err)) != WC_OK)
         goto cleanup;
     for (k = 0; k < nn; k++)
-        _wc_plan_add_planes(planes, &np, C + k);
-    _wc_plan_cells_build(cells, &status, planes, np, err);
+        _wc_cellset_add_planes(planes, &np, C + k);
+    _wc_cellset_build(cells, &status, planes, np, err);
     if (status != WC_OK)
         goto cleanup;
     keys = _wc_cone_keys_init(C, nn, cells);
@@ -139,7 +139,7 @@ goal_empty(int * empty, fmpq * witness, const wc_plan_strings_t T,
         if (((inside[i / FLINT_BITS] >> (i % FLINT_BITS)) & 1) == 0)
         {
             *empty = 0;
-            _wc_plan_cell_point(witness, cells, i);
+            _wc_cellset_point(witness, cells, i);
         }
 
 cleanup:

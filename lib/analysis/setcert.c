@@ -19,7 +19,6 @@
 
 #include "exact/lp.h"
 #include "exact/vec3.h"
-#include "exact/zvec3set.h"
 #include "analysis/stabmodel.h"
 #include "analysis/setcert.h"
 
@@ -163,13 +162,17 @@ push_vec(fmpz ** list, slong * n, slong * cap, const fmpz * v)
     return (*n)++;
 }
 
-/* The index of the plane h (made canonical) in T's list, added if new.  */
+/* The index of the plane h (made canonical, the way a certificate lists
+   a plane) in T's list, added if new.  */
 static slong
 plane_index(_wc_settree * T, fmpz * h)
 {
+    fmpz_t t;
     slong i;
 
-    _wc_region3_canonical(h);
+    fmpz_init(t);
+    _wc_zvec3_canonical(h, t);
+    fmpz_clear(t);
     for (i = 0; i < T->nplanes; i++)
         if (_fmpz_vec_equal(T->planes + 3 * i, h, 3))
             return i;

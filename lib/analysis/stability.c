@@ -26,7 +26,7 @@
 #include "exact/vec3.h"
 #include "analysis/kinematics.h"
 #include "analysis/stabmodel.h"
-#include "analysis/planparts.h"
+#include "analysis/cellset.h"
 #include "analysis/stability.h"
 
 void
@@ -336,7 +336,7 @@ stability_cones(wc_stability_t S, const _wc_stab_model * m,
 /* weak, moving, paper (words words each) := the cells in the weak cone,
    in a moving cone, and in eq. 19's union (the moving cones that are not
    rotation faces, then the union's own cones); a cone at a time over
-   every cell, from the cells' signs (planbits.c).  Returns 0 when out of
+   every cell, from the cells' signs (cellbits.c).  Returns 0 when out of
    memory.  */
 static int
 sets_bits(ulong * weak, ulong * moving, ulong * paper,
@@ -375,13 +375,13 @@ stability_sets(wc_stability_t S, wc_error_t err)
     wc_cell_bits X;
 
     fmpz_mat_init(planes, 0, 3);
-    _wc_plan_add_planes(planes, &np, S->weak);
+    _wc_cellset_add_planes(planes, &np, S->weak);
     for (i = 0; i < S->nmoving; i++)
-        _wc_plan_add_planes(planes, &np, S->moving + i);
+        _wc_cellset_add_planes(planes, &np, S->moving + i);
     for (i = 0; i < S->nunion; i++)
-        _wc_plan_add_planes(planes, &np, S->paper_union + i);
+        _wc_cellset_add_planes(planes, &np, S->paper_union + i);
     status = WC_OK;
-    _wc_plan_cells_build(S->cells, &status, planes, np, err);
+    _wc_cellset_build(S->cells, &status, planes, np, err);
     fmpz_mat_clear(planes);
     if (status != WC_OK)
         return status;

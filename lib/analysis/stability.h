@@ -34,6 +34,7 @@
 #include <flint/fmpz_mat.h>
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/problem.h"
 #include "exact/cone.h"
 #include "exact/cells.h"
@@ -96,12 +97,6 @@ typedef struct
 wc_classify_struct;
 
 typedef wc_classify_struct wc_classify_t[1];
-
-/* The most touching fixels classify and stability take (the moving faces
-   are O(t^2) LPs of size O(t), or cones, for t touching fixels; see
-   wrenchcone(1), LIMITS).  */
-#define WC_CLASSIFY_MAX_TOUCHING 100
-#define WC_STABILITY_MAX_TOUCHING 100
 
 void wc_classify_init(wc_classify_t R);
 void wc_classify_clear(wc_classify_t R);

@@ -15,41 +15,6 @@
 
 #define SMALL(x) (!COEFF_IS_MPZ(*(x)))
 
-ulong
-_wc_zrow3_gcd_ui(ulong a, ulong b)
-{
-    while (b != 0)
-    {
-        ulong r = a % b;
-
-        a = b;
-        b = r;
-    }
-    return a;
-}
-
-void
-_wc_zrow3_primitive(fmpz * x, fmpz_t g)
-{
-    if (SMALL(x) && SMALL(x + 1) && SMALL(x + 2))
-    {
-        ulong a = FLINT_ABS(x[0]), b = FLINT_ABS(x[1]), c = FLINT_ABS(x[2]);
-        slong d = (slong) _wc_zrow3_gcd_ui(_wc_zrow3_gcd_ui(a, b), c);
-
-        if (d > 1)
-        {
-            x[0] /= d;
-            x[1] /= d;
-            x[2] /= d;
-        }
-        return;
-    }
-    _fmpz_vec_content(g, x, 3);
-    if (!fmpz_is_one(g) && !fmpz_is_zero(g))
-        _fmpz_vec_scalar_divexact_fmpz(x, x, 3, g);
-}
-
-
 static int
 row_cmp(const fmpz * a, const fmpz * b)
 {

@@ -1,5 +1,6 @@
 /* zrows3.h -- internal: integer rows in R^3 for the direct route's fast
-   path (direct3.c): content, sorting, a cheap certificate of R^3.
+   path (direct3.c): sorting, a cheap certificate of R^3 (their content is
+   vec3.h's).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -13,12 +14,6 @@
 #define WC_ANALYSIS_ZROWS3_H
 
 #include <flint/fmpz.h>
-
-/* gcd(a, b) (gcd(a, 0) = a).  */
-ulong _wc_zrow3_gcd_ui(ulong a, ulong b);
-
-/* x := x / content(x) (x unchanged when zero); g is scratch.  */
-void _wc_zrow3_primitive(fmpz * x, fmpz_t g);
 
 /* A[0..k) := its distinct nonzero rows, sorted lexicographically, in
    place; returns their number.  */

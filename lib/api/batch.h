@@ -11,13 +11,11 @@
 #include <stdio.h>
 
 #include "core/error.h"
+#include "core/limits.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* The most threads wc_batch runs.  */
-#define WC_BATCH_MAX_JOBS 256
 
 /* Answer every line of in that is not blank (spaces, tabs, CR) with
    wc_request_json_at, errors located in name at the line's number, and

@@ -20,6 +20,7 @@
 #include <stdio.h>
 
 #include "core/problem.h"
+#include "core/limits.h"
 #include "exact/cone.h"
 #include "analysis/wrench.h"
 #include "analysis/kinematics.h"
@@ -54,10 +55,6 @@ _wc_command;
    when name is none of them.  */
 const char * _wc_command_name(_wc_command c);
 int _wc_command_find(const char * name);
-
-/* Inputs larger than this are refused before they are parsed (the
-   command line's limit on a problem or a foreign cone file).  */
-#define _WC_MAX_INPUT_BYTES ((size_t) 256 << 20)
 
 /* One input text: read from stream when it is not NULL (the command line
    passes stdin for "-"), else from the file path when text is NULL, else
@@ -260,7 +257,6 @@ int _wc_answer_fprint_certificate(FILE * out, const _wc_answer * A,
    order (ASCII-sorted), one `cone --format=json` line each.  R is a cone
    request (its mode unused).  Refuses (WC_EINPUT, nothing written) when
    the problem has more than _WC_ALL_MODES_MAX modes.  */
-#define _WC_ALL_MODES_MAX 10000
 
 /* The cone of A->R->mode for P (A's own problem, or the one --all-modes
    shares) into A (a cone answer).  */

@@ -103,7 +103,7 @@ verify_run(_wc_answer * A, wc_error_t err)
     size_t len = 0;
     sink s;
     int status = _wc_input_read_max(&cert, &len, &R->cert,
-                                    WC_CERTIFICATE_MAX_BYTES, err);
+                                    WC_CERT_MAX_BYTES, err);
 
     if (status == WC_OK && (status = sink_open(&s, err)) == WC_OK)
     {
@@ -190,9 +190,6 @@ const _wc_runner _wc_run_random = {
 
 /* draw */
 
-/* The longest --sweep list: each value is a plan and a layer.  */
-#define DRAW_MAX_SWEEP 12
-
 static int
 draw_scene(_wc_scene_t S, const _wc_request * R, const wc_problem_t P,
            wc_error_t err)
@@ -204,7 +201,7 @@ draw_scene(_wc_scene_t S, const _wc_request * R, const wc_problem_t P,
     for (i = 0; i < 3; i++)
         fmpq_init(g + i);
     if (R->sweep != NULL)
-        status = wc_parse_number_list(&mu, &k, R->sweep, DRAW_MAX_SWEEP,
+        status = wc_parse_number_list(&mu, &k, R->sweep, _WC_DRAW_MAX_SWEEP,
                                       NULL, "a friction coefficient",
                                       "<sweep>", err);
     if (status == WC_OK && R->graph_wrench != NULL)

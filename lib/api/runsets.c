@@ -172,9 +172,6 @@ const _wc_runner _wc_run_plan = {
 
 /* sweep */
 
-/* The longest --friction list: each value costs a plan.  */
-#define SWEEP_MAX_FRICTIONS 1000
-
 static void
 sweep_init(_wc_answer * A)
 {
@@ -194,7 +191,7 @@ one_positive(fmpq_t x, const char * s, const char * what, const char * noun,
 {
     fmpq * v = NULL;
     slong n = 0;
-    int status = wc_parse_number_list(&v, &n, s, SWEEP_MAX_FRICTIONS, NULL,
+    int status = wc_parse_number_list(&v, &n, s, _WC_SWEEP_MAX_FRICTIONS, NULL,
                                       noun, what, err);
 
     if (status == WC_OK && (n != 1 || fmpq_sgn(v) <= 0))
@@ -222,7 +219,7 @@ sweep_run(_wc_answer * A, wc_error_t err)
                                          "a plan certificate", err);
     if (status == WC_OK && R->friction != NULL)
         status = wc_parse_number_list(&mu, &n, R->friction,
-                                      SWEEP_MAX_FRICTIONS,
+                                      _WC_SWEEP_MAX_FRICTIONS,
                                       "each costs a plan",
                                       "a friction coefficient", "<friction>",
                                       err);

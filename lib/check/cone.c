@@ -27,7 +27,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/checker.h"
+#include "check/faces.h"
 
 /* h . v, counted.  */
 static int

@@ -16,7 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/checker.h"
+#include "check/setcheck.h"
+#include "check/critcheck.h"
 
 typedef struct
 {

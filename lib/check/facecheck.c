@@ -10,7 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/checker.h"
+#include "check/faces.h"
+#include "check/stabcheck.h"
 
 /* "face 3 (ls)" or "face 3 (n, rotation -1)" */
 static void

@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/checker.h"
+#include "check/faces.h"
 
 /* ------------------------------------------------------------------ */
 /* The set of sign strings.                                            */

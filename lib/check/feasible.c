@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/checker.h"
+#include "check/feasible.h"
 
 /* What the certificate says.  */
 typedef struct

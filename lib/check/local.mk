@@ -30,4 +30,10 @@ wccheckdir = $(pkgincludedir)/check
 wccheck_HEADERS = \
 	lib/check/verify.h
 noinst_HEADERS += \
-	lib/check/checker.h
+	lib/check/checker.h \
+	lib/check/critcheck.h \
+	lib/check/faces.h \
+	lib/check/feasible.h \
+	lib/check/region.h \
+	lib/check/setcheck.h \
+	lib/check/stabcheck.h

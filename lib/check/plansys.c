@@ -23,7 +23,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/checker.h"
+#include "check/setcheck.h"
 
 /* 1 when the n-letter string s is a plan string: exactly one s, m or u
    elsewhere.  */

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/certkind.h"
 #include "check/checker.h"
 
 int
@@ -267,24 +268,24 @@ _wc_check_kind(wc_check_reader * c, const wc_json_node * root,
         return WC_OK;
     if (k->type != WC_JSON_STRING)
         return _wc_check_bad(c, k, "'kind' must be a string");
-    if (is_word(k->text, k->len, WC_CHECK_KIND_MODE))
+    if (is_word(k->text, k->len, WC_CERT_KIND_MODE))
         return WC_OK;
-    if (is_word(k->text, k->len, WC_CHECK_KIND_STABILITY))
+    if (is_word(k->text, k->len, WC_CERT_KIND_STABILITY))
     {
         *kind = WC_CHECK_STABILITY;
         return WC_OK;
     }
-    if (is_word(k->text, k->len, WC_CHECK_KIND_SET))
+    if (is_word(k->text, k->len, WC_CERT_KIND_SET))
     {
         *kind = WC_CHECK_SET;
         return WC_OK;
     }
-    if (is_word(k->text, k->len, WC_CHECK_KIND_PLAN))
+    if (is_word(k->text, k->len, WC_CERT_KIND_PLAN))
     {
         *kind = WC_CHECK_PLAN;
         return WC_OK;
     }
-    if (is_word(k->text, k->len, WC_CHECK_KIND_CRIT))
+    if (is_word(k->text, k->len, WC_CERT_KIND_CRIT))
     {
         *kind = WC_CHECK_CRIT;
         return WC_OK;

@@ -18,6 +18,7 @@
 #include <stdlib.h>
 
 #include "check/checker.h"
+#include "check/region.h"
 
 void
 _wc_check_region_init(wc_check_region * R)

@@ -39,7 +39,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/checker.h"
+#include "check/setcheck.h"
 
 /* ------------------------------------------------------------------ */
 /* Checking.                                                           */

@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/checker.h"
+#include "check/setcheck.h"
 #include "check/verify.h"
 
 void

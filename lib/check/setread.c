@@ -18,7 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/checker.h"
+#include "check/setcheck.h"
 
 void
 _wc_check_piece_clear(wc_check_piece * Q)

@@ -31,7 +31,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/checker.h"
+#include "check/region.h"
+#include "check/setcheck.h"
 
 /* ------------------------------------------------------------------ */
 /* Reading.                                                            */

@@ -9,7 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "check/checker.h"
+#include "check/stabcheck.h"
 
 int
 _wc_check_scratch_init(wc_check_scratch * X, const wc_check_stability * S,

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "check/checker.h"
+#include "check/stabcheck.h"
 
 void
 _wc_check_stability_init(wc_check_stability * S)

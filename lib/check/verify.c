@@ -24,7 +24,12 @@
 
 #include <stdlib.h>
 
+#include "core/certkind.h"
 #include "check/checker.h"
+#include "check/feasible.h"
+#include "check/stabcheck.h"
+#include "check/setcheck.h"
+#include "check/critcheck.h"
 #include "check/verify.h"
 
 /* Parse text and read the kind of its certificate into *kind, c made
@@ -71,12 +76,12 @@ wc_verify_certificate(int * holds, char ** reason, char ** mode,
     if (kind != WC_CHECK_MODE)
     {
         status = _wc_check_bad(&c, _wc_json_object_get(&J->root, "kind"),
-                               "expected a mode-feasibility certificate, "
-                               "found kind '%s'", kind == WC_CHECK_SET
-                               ? WC_CHECK_KIND_SET : kind == WC_CHECK_PLAN
-                               ? WC_CHECK_KIND_PLAN : kind == WC_CHECK_CRIT
-                               ? WC_CHECK_KIND_CRIT
-                               : WC_CHECK_KIND_STABILITY);
+                               "expected a " WC_CERT_KIND_MODE
+                               " certificate, found kind '%s'", kind == WC_CHECK_SET
+                               ? WC_CERT_KIND_SET : kind == WC_CHECK_PLAN
+                               ? WC_CERT_KIND_PLAN : kind == WC_CHECK_CRIT
+                               ? WC_CERT_KIND_CRIT
+                               : WC_CERT_KIND_STABILITY);
         goto cleanup;
     }
     status = _wc_check_mode_certificate(&c, &J->root, &h, &why, &m, &feas);

@@ -27,22 +27,11 @@
 #include <stdio.h>
 
 #include "core/error.h"
+#include "core/limits.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* The most planes a certificate of a set (stability-set, plan-goal)
-   lists: the checker finds the cells of their arrangement from every
-   pair of planes, O(p^2) time and memory (1000 planes: about 0.6 s and
-   110 MB), so it refuses more as malformed, and wrenchcone does not write
-   more (wrenchcone-certificate(5), LIMITS).  */
-#define WC_CERT_MAX_PLANES 1000
-
-/* The largest certificate file that wrenchcone verify and wrenchcone-verify
-   read (refused before it is parsed): a problem of a million fixels is far
-   below it, and a certificate carries at most two rows per fixel.  */
-#define WC_CERTIFICATE_MAX_BYTES ((size_t) 64 << 20)
 
 /* Check the mode-feasibility certificate text[0..len) (any bytes; a
    strong-stability certificate is bad input here), read from file (the

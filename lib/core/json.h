@@ -22,15 +22,12 @@
 #include <stddef.h>
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/text.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* Arrays and objects nested deeper than this are an error (the reader is
-   recursive; the bound keeps its stack small whatever the input).  */
-#define WC_JSON_MAX_DEPTH 64
 
 typedef enum
 {

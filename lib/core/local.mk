@@ -28,11 +28,13 @@ lib_libwc_la_SOURCES += \
 wccoredir = $(pkgincludedir)/core
 wccore_HEADERS = \
 	lib/core/error.h \
+	lib/core/limits.h \
 	lib/core/problem.h \
 	lib/core/random.h \
 	lib/core/version.h \
 	lib/core/progress.h
 noinst_HEADERS += \
+	lib/core/certkind.h \
 	lib/core/json.h \
 	lib/core/text.h \
 	lib/core/readall.h \

@@ -10,18 +10,9 @@
 #include <flint/fmpz.h>
 
 #include "core/lexer.h"
+#include "core/limits.h"
 #include "core/problem.h"
 #include "core/text.h"
-
-/* The exponent of a decimal number is bounded so that "1e999999999"
-   cannot make us build a gigantic power of ten.  */
-#define WC_MAX_EXPONENT 100000
-
-/* An integer of WC_NUMBER_MAX_DIGITS decimal digits or more (>= 10^(D-1)
-   with D > WC_NUMBER_MAX_DIGITS) has more than WC_NUMBER_MAX_BITS bits:
-   ceil(WC_NUMBER_MAX_BITS log10 2) rounded up, as 0.30103 > log10 2.  */
-#define WC_NUMBER_MAX_DIGITS \
-    ((WC_NUMBER_MAX_BITS * 30103 + 99999) / 100000)
 
 static int
 is_digit(char c)

@@ -16,6 +16,7 @@
 #include <flint/fmpq.h>
 
 #include "core/error.h"
+#include "core/limits.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -137,21 +138,6 @@ int wc_parse_number_list(fmpq ** v, slong * count, const char * s,
                          slong max, const char * why, const char * noun,
                          const char * what, wc_error_t err);
 void wc_number_list_clear(fmpq * v, slong n);
-
-/* Limits of the problem file reader, so that no command's cost grows
-   beyond bounds with the size of the numbers or of the shape (see
-   wrenchcone(5)).  The numerator and denominator of every number in a
-   problem file fit in WC_NUMBER_MAX_BITS bits (for p/q those written, for
-   a decimal those of its value in lowest terms), and so does every number
-   the program reads from its command line; wc_parse_number itself has no
-   such bound.  A polygon has at most WC_POLYGON_MAX_VERTICES
-   vertices, and a problem at most WC_PROBLEM_MAX_FIXELS fixels (each
-   command has a lower limit of its own: wc_problem_check_fixels).  The
-   message of a number over the bound says 1024: change it in number.c
-   with the value.  */
-#define WC_NUMBER_MAX_BITS 1024
-#define WC_POLYGON_MAX_VERTICES 1000
-#define WC_PROBLEM_MAX_FIXELS 10000
 
 #ifdef __cplusplus
 }

@@ -116,14 +116,12 @@
 #include <flint/fmpq.h>
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "core/problem.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* The largest number of fixels wc_random_problem makes.  */
-#define WC_RANDOM_MAX_FIXELS 1000
 
 /* The options.  Initialise with wc_random_options_init (the defaults of
    wrenchcone random: 3 fixels, seed 1, not degenerate, no shape, friction

@@ -14,13 +14,11 @@
 #include <stdio.h>
 
 #include "core/error.h"
+#include "core/limits.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* Input text quoted in a message is cut after this many bytes.  */
-#define WC_SHOW_MAX 64
 
 /* A malloc'd copy of s; NULL when out of memory.  */
 char * _wc_strdup(const char * s);

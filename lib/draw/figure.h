@@ -17,15 +17,13 @@
 
 #include "core/error.h"
 #include "core/problem.h"
+#include "core/limits.h"
 #include "analysis/push.h"
 #include "draw/scene.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* The most fixels of a state-transition graph (2^n states).  */
-#define _WC_DRAW_GRAPH_MAX_FIXELS 4
 
 /* The part (polygon, disk, or a dashed frame round the fixels), its
    centre of mass, the fixels with their normals and friction cones.

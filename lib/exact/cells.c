@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include <flint/fmpz_vec.h>
+#include <flint/fmpq_vec.h>
 
 #include "exact/vec3.h"
 #include "exact/hash.h"
@@ -762,11 +763,11 @@ wc_cells_find(const wc_cells_t A, slong dim, const signed char * sign)
 slong
 wc_cells_locate(const wc_cells_t A, const fmpq * x)
 {
-    slong m = A->nplanes, q, j, zeros = 0, r = -1;
+    slong m = A->nplanes, q, zeros = 0, r = -1;
     signed char * s;
     fmpz * v;
     fmpz_t den, t;
-    int nonzero = 0;
+    int nonzero;
 
     if (A->count == 0)
         return -1;
@@ -776,15 +777,8 @@ wc_cells_locate(const wc_cells_t A, const fmpq * x)
     fmpz_init(t);
 
     /* x times the (positive) common denominator: the same signs.  */
-    fmpz_one(den);
-    for (j = 0; j < 3; j++)
-        fmpz_lcm(den, den, fmpq_denref(x + j));
-    for (j = 0; j < 3; j++)
-    {
-        fmpz_divexact(t, den, fmpq_denref(x + j));
-        fmpz_mul(v + j, fmpq_numref(x + j), t);
-        nonzero |= !fmpz_is_zero(v + j);
-    }
+    _fmpq_vec_get_fmpz_vec_fmpz(v, den, x, 3);
+    nonzero = !_fmpz_vec_is_zero(v, 3);
     for (q = 0; q < m; q++)
     {
         s[q] = (signed char) _wc_zvec3_dot_sgn(WC_ROW(A->planes, q), v, t);

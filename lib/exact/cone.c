@@ -53,30 +53,6 @@ vstack(fmpq_mat_t out, const fmpq_mat_t A, const fmpq_mat_t B, slong d)
             fmpq_set(fmpq_mat_entry(out, na + i, j), fmpq_mat_entry(B, i, j));
 }
 
-/* v := the primitive integer vector on the ray of row i of A.  */
-static void
-row_primitive(fmpz * v, const fmpq_mat_t A, slong i)
-{
-    slong j, d = fmpq_mat_ncols(A);
-    fmpz_t den, c;
-
-    fmpz_init(den);
-    fmpz_init(c);
-    fmpz_one(den);
-    for (j = 0; j < d; j++)
-        fmpz_lcm(den, den, fmpq_denref(fmpq_mat_entry(A, i, j)));
-    for (j = 0; j < d; j++)
-    {
-        fmpz_divexact(c, den, fmpq_denref(fmpq_mat_entry(A, i, j)));
-        fmpz_mul(v + j, fmpq_numref(fmpq_mat_entry(A, i, j)), c);
-    }
-    _fmpz_vec_content(c, v, d);
-    if (!fmpz_is_zero(c) && !fmpz_is_one(c))
-        _fmpz_vec_scalar_divexact_fmpz(v, v, d, c);
-    fmpz_clear(den);
-    fmpz_clear(c);
-}
-
 static int
 vec_cmp(const fmpz * a, const fmpz * b, slong d)
 {
@@ -223,7 +199,8 @@ canonical_rows(fmpz_mat_t out, const fmpq_mat_t A, slong d)
     fmpz_mat_init(V, m, d);
     for (i = 0; i < m; i++)
     {
-        row_primitive(WC_ROW(V, i), A, i);
+        _wc_qvec_primitive(WC_ROW(V, i), WC_ROW(A, i),
+                           fmpq_mat_ncols(A));
         if (!_fmpz_vec_is_zero(WC_ROW(V, i), d))
         {
             ref[k].row = WC_ROW(V, i);
@@ -256,7 +233,8 @@ canonical_basis(fmpz_mat_t out, const fmpq_mat_t A, slong d)
     fmpz_mat_clear(out);
     fmpz_mat_init(out, r, d);
     for (i = 0; i < r; i++)
-        row_primitive(WC_ROW(out, i), R, i);
+        _wc_qvec_primitive(WC_ROW(out, i), WC_ROW(R, i),
+                           fmpq_mat_ncols(R));
     fmpq_mat_clear(R);
 }
 
@@ -662,7 +640,8 @@ _wc_cone_set_hrep_kernel(wc_cone_t C, const fmpq_mat_t eqs,
        the faces they do not vanish on; the cone is empty when they fail
        on the closure's own relative interior.  */
     for (i = 0; i < ns; i++)
-        row_primitive(WC_ROW(Sz, i), strict, i);
+        _wc_qvec_primitive(WC_ROW(Sz, i), WC_ROW(strict, i),
+                           fmpq_mat_ncols(strict));
     for (f = 0; f < C->nfaces; f++)
     {
         face_point(p, C, C->faces + f);
@@ -792,7 +771,8 @@ wc_cone_image_sum(wc_cone_t W, const fmpq_mat_t T, const wc_cone_t V,
     words = k / FLINT_BITS + 1;
     inc = incidence(W->ineqs, W->rays, d, words);
     for (i = 0; i < kv; i++)
-        row_primitive(WC_ROW(TVz, i), TVr, i);
+        _wc_qvec_primitive(WC_ROW(TVz, i), WC_ROW(TVr, i),
+                           fmpq_mat_ncols(TVr));
     tight = incidence(W->ineqs, TVz, d, kv / FLINT_BITS + 1);
     tf = flint_calloc(m / FLINT_BITS + 1, sizeof(ulong));
     sel = flint_malloc(sizeof(int) * (kv + 1));
@@ -884,7 +864,6 @@ slong
 wc_cone_locate(const wc_cone_t C, const fmpq * g)
 {
     slong d = C->d, i, j, k, m, f = -1;
-    fmpq_mat_t G;
     fmpz * v;
     int * sel;
 
@@ -892,11 +871,8 @@ wc_cone_locate(const wc_cone_t C, const fmpq * g)
         return -1;
     k = fmpz_mat_nrows(C->rays);
     m = fmpz_mat_nrows(C->ineqs);
-    fmpq_mat_init(G, 1, d);
-    for (j = 0; j < d; j++)
-        fmpq_set(fmpq_mat_entry(G, 0, j), g + j);
     v = _fmpz_vec_init(d);
-    row_primitive(v, G, 0);
+    _wc_qvec_primitive(v, g, d);
     sel = flint_malloc(sizeof(int) * (k + 1));
     for (i = 0; i < fmpz_mat_nrows(C->eqs); i++)
         if (dot_sgn(WC_ROW(C->eqs, i), v, d) != 0)
@@ -916,7 +892,6 @@ wc_cone_locate(const wc_cone_t C, const fmpq * g)
     f = find_face(C, sel);
 
 cleanup:
-    fmpq_mat_clear(G);
     _fmpz_vec_clear(v, d);
     flint_free(sel);
     return f;

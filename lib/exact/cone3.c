@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include <flint/fmpz_vec.h>
+#include <flint/fmpq_vec.h>
 
 #include "core/error.h"
 #include "exact/vec3.h"
@@ -300,9 +301,7 @@ set_row(fmpz_mat_t A, slong i, const fmpz_t a, const fmpz_t b,
     fmpz_set(r + 1, b);
     fmpz_set(r + 2, c);
     fmpz_init(g);
-    _fmpz_vec_content(g, r, 3);
-    if (!fmpz_is_one(g))
-        _fmpz_vec_scalar_divexact_fmpz(r, r, 3, g);
+    _wc_zvec3_primitive(r, g);
     fmpz_clear(g);
 }
 
@@ -422,7 +421,7 @@ spans3(const fmpq_mat_t E)
 {
     fmpz * v = _fmpz_vec_init(9), * w = _fmpz_vec_init(3);
     fmpz_t den, t;
-    slong i, j, r = 0;
+    slong i, r = 0;
 
     fmpz_init(den);
     fmpz_init(t);
@@ -430,14 +429,7 @@ spans3(const fmpq_mat_t E)
     {
         fmpz * x = v + 3 * r;
 
-        fmpz_one(den);
-        for (j = 0; j < 3; j++)
-            fmpz_lcm(den, den, fmpq_denref(fmpq_mat_entry(E, i, j)));
-        for (j = 0; j < 3; j++)
-        {
-            fmpz_divexact(t, den, fmpq_denref(fmpq_mat_entry(E, i, j)));
-            fmpz_mul(x + j, fmpq_numref(fmpq_mat_entry(E, i, j)), t);
-        }
+        _fmpq_vec_get_fmpz_vec_fmpz(x, den, WC_ROW(E, i), 3);
         if (r == 0)
             r = !_fmpz_vec_is_zero(x, 3);
         else if (r == 1)

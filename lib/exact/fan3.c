@@ -409,7 +409,7 @@ fill(_wc_fan3_t F, const fmpz * G, const slong * S, slong m, fmpz_t t)
         else
             _fmpz_vec_set(r, g, 3);
         _wc_zvec3_cross_fast(h, G + 3 * S[(i + 1) % m], G + 3 * S[i]);
-        _wc_zvec3_primitive_fast(h, t);
+        _wc_zvec3_primitive(h, t);
     }
 }
 

@@ -37,29 +37,17 @@
 static void
 add_rows(fmpz_mat_t G, slong * k, const fmpq_mat_t A, int both)
 {
-    slong i, j;
-    fmpz_t den, c;
+    slong i;
 
     if (A == NULL)
         return;
-    fmpz_init(den);
-    fmpz_init(c);
     for (i = 0; i < fmpq_mat_nrows(A); i++)
     {
         fmpz * v = WC_ROW(G, *k);
 
-        fmpz_one(den);
-        for (j = 0; j < 3; j++)
-            fmpz_lcm(den, den, fmpq_denref(fmpq_mat_entry(A, i, j)));
-        for (j = 0; j < 3; j++)
-        {
-            fmpz_divexact(c, den, fmpq_denref(fmpq_mat_entry(A, i, j)));
-            fmpz_mul(v + j, fmpq_numref(fmpq_mat_entry(A, i, j)), c);
-        }
-        _fmpz_vec_content(c, v, 3);
-        if (fmpz_is_zero(c))
+        _wc_qvec_primitive(v, WC_ROW(A, i), 3);
+        if (_fmpz_vec_is_zero(v, 3))
             continue;
-        _fmpz_vec_scalar_divexact_fmpz(v, v, 3, c);
         (*k)++;
         if (both)
         {
@@ -67,8 +55,6 @@ add_rows(fmpz_mat_t G, slong * k, const fmpq_mat_t A, int both)
             (*k)++;
         }
     }
-    fmpz_clear(den);
-    fmpz_clear(c);
 }
 
 typedef struct
@@ -175,8 +161,7 @@ planar(fmpq_mat_t E, fmpq_mat_t F, const fmpz_mat_t G, slong k)
         nh = -1;                        /* rank 1 or 3 */
         goto cleanup;
     }
-    _fmpz_vec_content(t, e, 3);
-    _fmpz_vec_scalar_divexact_fmpz(e, e, 3, t);
+    _wc_zvec3_primitive(e, t);
     whole = _fmpz_vec_is_zero(q, 3);
     _wc_zvec3_cross(w, e, q);           /* w . g = (q x g) . e */
     for (i = 0; i < k && !whole; i++)

@@ -383,14 +383,6 @@ space_certified(lp_ctx * c, fmpz * e)
     return space_held(c, P, m, e);
 }
 
-static void
-primitive(fmpz * v, fmpz_t t)
-{
-    _fmpz_vec_content(t, v, 3);
-    if (!fmpz_is_zero(t) && !fmpz_is_one(t))
-        _fmpz_vec_scalar_divexact_fmpz(v, v, 3, t);
-}
-
 int
 _wc_polar3(fmpz * V, const fmpz * G, slong k)
 {
@@ -453,8 +445,8 @@ _wc_polar3(fmpz * V, const fmpz * G, slong k)
     }
     else
         r = chord(&c, V, v1, v2, e + 12);
-    primitive(V, c.s);
-    primitive(V + 3, c.s);
+    _wc_zvec3_primitive(V, c.s);
+    _wc_zvec3_primitive(V + 3, c.s);
 
 cleanup:
     free(c.ord);

@@ -51,30 +51,6 @@ push(_wc_region3 * R, const fmpz * z)
     _fmpz_vec_set(R->r + 3 * R->n++, z, 3);
 }
 
-static void
-primitive(fmpz * z)
-{
-    fmpz_t g;
-
-    fmpz_init(g);
-    _fmpz_vec_content(g, z, 3);
-    if (!fmpz_is_zero(g) && !fmpz_is_one(g))
-        _fmpz_vec_scalar_divexact_fmpz(z, z, 3, g);
-    fmpz_clear(g);
-}
-
-void
-_wc_region3_canonical(fmpz * h)
-{
-    slong j = 0;
-
-    primitive(h);
-    while (j < 2 && fmpz_is_zero(h + j))
-        j++;
-    if (fmpz_sgn(h + j) < 0)
-        _fmpz_vec_neg(h, h, 3);
-}
-
 void
 _wc_region3_sum(fmpz * s, const _wc_region3 * R)
 {
@@ -89,10 +65,11 @@ void
 _wc_region3_basis(_wc_region3 * out, const fmpz * h)
 {
     fmpz d[9];
-    fmpz_t det;
+    fmpz_t det, t;
     slong i, k;
 
     fmpz_init(det);
+    fmpz_init(t);
     for (i = 0; i < 9; i++)
         fmpz_init(d + i);
     for (i = 0; i < 3; i++)
@@ -105,7 +82,7 @@ _wc_region3_basis(_wc_region3 * out, const fmpz * h)
     {
         if (fmpz_sgn(det) < 0)
             _fmpz_vec_neg(d + 3 * i, d + 3 * i, 3);
-        primitive(d + 3 * i);
+        _wc_zvec3_primitive(d + 3 * i, t);
     }
     for (k = 0; k < 27; k++)
     {
@@ -127,6 +104,7 @@ _wc_region3_basis(_wc_region3 * out, const fmpz * h)
     for (i = 0; i < 9; i++)
         fmpz_clear(d + i);
     fmpz_clear(det);
+    fmpz_clear(t);
 }
 
 void
@@ -170,7 +148,7 @@ _wc_region3_split(_wc_region3 * out, const _wc_region3 * R, const fmpz * h)
             if (s[i] < 0)
                 fmpz_neg(c + k, c + k);
         }
-        primitive(c);
+        _wc_zvec3_primitive(c, t);
         for (k = 0; k < 3; k++)
             if (out[k].dim >= 0)
                 push(out + k, c);

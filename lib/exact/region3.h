@@ -38,8 +38,4 @@ void _wc_region3_basis(_wc_region3 * out, const fmpz * h);
 void _wc_region3_split(_wc_region3 * out, const _wc_region3 * R,
                        const fmpz * h);
 
-/* Make the nonzero vector h primitive with its first nonzero entry
-   positive (the way a certificate lists a plane).  */
-void _wc_region3_canonical(fmpz * h);
-
 #endif

@@ -8,6 +8,7 @@
 
 #include <flint/ulong_extras.h>
 #include <flint/fmpz_vec.h>
+#include <flint/fmpq_vec.h>
 
 #include "exact/vec3.h"
 
@@ -104,10 +105,10 @@ _wc_zvec3_dot_fast(fmpz_t r, const fmpz * a, const fmpz * b)
     _wc_zvec3_dot_sgn(a, b, r);
 }
 
-/* gcd(a, b), Stein's binary algorithm (shifts and subtractions) where the
-   compiler counts trailing zeros.  */
-static ulong
-gcd_words(ulong a, ulong b)
+/* Stein's binary algorithm (shifts and subtractions) where the compiler
+   counts trailing zeros.  */
+ulong
+_wc_gcd_ui(ulong a, ulong b)
 {
 #if defined(__GNUC__) && FLINT_BITS == 64
     int k;
@@ -136,23 +137,64 @@ gcd_words(ulong a, ulong b)
 }
 
 void
-_wc_zvec3_primitive_fast(fmpz * h, fmpz_t t)
+_wc_zvec3_primitive(fmpz * v, fmpz_t t)
 {
     /* Word entries: their gcd in words, each quotient a word.  */
-    if (!COEFF_IS_MPZ(h[0]) && !COEFF_IS_MPZ(h[1]) && !COEFF_IS_MPZ(h[2]))
+    if (!COEFF_IS_MPZ(v[0]) && !COEFF_IS_MPZ(v[1]) && !COEFF_IS_MPZ(v[2]))
     {
-        ulong g = gcd_words(FLINT_ABS(h[0]), FLINT_ABS(h[1]));
+        ulong g = _wc_gcd_ui(FLINT_ABS(v[0]), FLINT_ABS(v[1]));
         slong j;
 
-        g = gcd_words(g, FLINT_ABS(h[2]));
+        g = _wc_gcd_ui(g, FLINT_ABS(v[2]));
         if (g > 1)
             for (j = 0; j < 3; j++)
-                fmpz_set_si(h + j, h[j] / (slong) g);
+                fmpz_set_si(v + j, v[j] / (slong) g);
         return;
     }
-    _fmpz_vec_content(t, h, 3);
+    _fmpz_vec_content(t, v, 3);
     if (!fmpz_is_zero(t) && !fmpz_is_one(t))
-        _fmpz_vec_scalar_divexact_fmpz(h, h, 3, t);
+        _fmpz_vec_scalar_divexact_fmpz(v, v, 3, t);
+}
+
+int
+_wc_zvec3_canonical(fmpz * v, fmpz_t t)
+{
+    slong j;
+
+    for (j = 0; j < 3 && fmpz_is_zero(v + j); j++)
+        ;
+    if (j == 3)
+        return 0;
+    _wc_zvec3_primitive(v, t);
+    if (fmpz_sgn(v + j) > 0)
+        return 1;
+    _fmpz_vec_neg(v, v, 3);
+    return -1;
+}
+
+int
+_wc_zvec3_cmp(const fmpz * a, const fmpz * b)
+{
+    slong j;
+    int c;
+
+    for (j = 0; j < 3; j++)
+        if ((c = fmpz_cmp(a + j, b + j)) != 0)
+            return c;
+    return 0;
+}
+
+void
+_wc_qvec_primitive(fmpz * v, const fmpq * x, slong len)
+{
+    fmpz_t t;
+
+    fmpz_init(t);
+    _fmpq_vec_get_fmpz_vec_fmpz(v, t, x, len);
+    _fmpz_vec_content(t, v, len);
+    if (!fmpz_is_zero(t) && !fmpz_is_one(t))
+        _fmpz_vec_scalar_divexact_fmpz(v, v, len, t);
+    fmpz_clear(t);
 }
 
 #ifdef __SIZEOF_INT128__

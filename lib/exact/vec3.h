@@ -54,10 +54,27 @@ _wc_zvec3_dot_sgn_fast(const fmpz * a, const fmpz * b, fmpz_t t)
 void _wc_zvec3_cross_fast(fmpz * c, const fmpz * a, const fmpz * b);
 void _wc_zvec3_dot_fast(fmpz_t r, const fmpz * a, const fmpz * b);
 
-/* h := h divided by the gcd of its entries (nothing when h is 0), as
-   zvec3set.h's _wc_zvec3_primitive does, but in
-   words when no entry is a GMP integer; t is scratch.  */
-void _wc_zvec3_primitive_fast(fmpz * h, fmpz_t t);
+/* gcd(a, b) (gcd(a, 0) = a) of words.  */
+ulong _wc_gcd_ui(ulong a, ulong b);
+
+/* v := the primitive vector on the ray of v, v divided by the gcd of its
+   entries (v zero stays zero), in words when no entry is a GMP integer;
+   t is scratch.  */
+void _wc_zvec3_primitive(fmpz * v, fmpz_t t);
+
+/* v := the canonical vector of the line of v (or of the plane through the
+   origin with normal v): the primitive one whose first nonzero entry is
+   positive.  Returns 0 when v is zero, -1 when v was turned around, else
+   1.  */
+int _wc_zvec3_canonical(fmpz * v, fmpz_t t);
+
+/* Lexicographic order of integer 3-vectors (-1, 0, 1 as fmpz_cmp).  */
+int _wc_zvec3_cmp(const fmpz * a, const fmpz * b);
+
+/* v := the primitive integer vector on the ray of the rational vector x
+   (len entries, any length: the 3-vectors are the usual case); v zero
+   when x is.  v must not alias x.  */
+void _wc_qvec_primitive(fmpz * v, const fmpq * x, slong len);
 
 /* The sign of a^2 b - c^2 d (-1, 0, 1; the comparison of two squared
    cosines), in 192-bit words when every argument is a word integer and

@@ -6,18 +6,11 @@
 
 #include <config.h>
 
+#include "exact/vec3.h"
 #include "exact/zrow.h"
 
 int
 _wc_zrow_cmp(const void * a, const void * b)
 {
-    const fmpz * x = ((const _wc_zrow *) a)->v;
-    const fmpz * y = ((const _wc_zrow *) b)->v;
-    slong j;
-    int c;
-
-    for (j = 0; j < 3; j++)
-        if ((c = fmpz_cmp(x + j, y + j)) != 0)
-            return c;
-    return 0;
+    return _wc_zvec3_cmp(((const _wc_zrow *) a)->v, ((const _wc_zrow *) b)->v);
 }

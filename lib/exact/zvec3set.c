@@ -13,42 +13,6 @@
 #include "exact/hash.h"
 #include "exact/zvec3set.h"
 
-void
-_wc_zvec3_primitive(fmpz * v, fmpz_t t)
-{
-    _fmpz_vec_content(t, v, 3);
-    if (!fmpz_is_zero(t) && !fmpz_is_one(t))
-        _fmpz_vec_scalar_divexact_fmpz(v, v, 3, t);
-}
-
-int
-_wc_zvec3_canonical(fmpz * v, fmpz_t t)
-{
-    slong j;
-
-    for (j = 0; j < 3 && fmpz_is_zero(v + j); j++)
-        ;
-    if (j == 3)
-        return 0;
-    _wc_zvec3_primitive(v, t);
-    if (fmpz_sgn(v + j) > 0)
-        return 1;
-    _fmpz_vec_neg(v, v, 3);
-    return -1;
-}
-
-int
-_wc_zvec3_cmp(const fmpz * a, const fmpz * b)
-{
-    slong j;
-    int c;
-
-    for (j = 0; j < 3; j++)
-        if ((c = fmpz_cmp(a + j, b + j)) != 0)
-            return c;
-    return 0;
-}
-
 static uint64_t
 zvec3_hash(const fmpz * v)
 {

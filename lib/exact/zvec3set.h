@@ -1,5 +1,5 @@
-/* zvec3set.h -- internal: integer 3-vectors up to scale (lines, planes,
-   rays) and sets of them with ids.
+/* zvec3set.h -- internal: sets of integer 3-vectors up to scale (lines,
+   planes, rays) with ids.
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -7,7 +7,8 @@
 
    Not installed.  A ray has one primitive integer vector; a line (or a
    plane through the origin, by its normal) has one canonical vector: the
-   primitive one whose first nonzero entry is positive.  A set gives each
+   primitive one whose first nonzero entry is positive (vec3.h makes both,
+   _wc_zvec3_primitive and _wc_zvec3_canonical).  A set gives each
    distinct vector an id, in the order the vectors were first added, so
    that ids do not depend on the hash.  */
 
@@ -16,16 +17,7 @@
 
 #include <flint/fmpz.h>
 
-/* v := the primitive vector on the ray of v (v zero stays zero); t is
-   scratch.  */
-void _wc_zvec3_primitive(fmpz * v, fmpz_t t);
-
-/* v := the canonical vector of the line of v.  Returns 0 when v is zero,
-   -1 when v was turned around, else 1.  */
-int _wc_zvec3_canonical(fmpz * v, fmpz_t t);
-
-/* Lexicographic order.  */
-int _wc_zvec3_cmp(const fmpz * a, const fmpz * b);
+#include "exact/vec3.h"
 
 typedef struct
 {

@@ -140,33 +140,6 @@ angles_to(wc_cmp_vec * U, const fmpz_mat_t A, const wc_cone_t C)
     _fmpq_vec_clear(v, 3);
 }
 
-/* z := the primitive integer vector on the ray of p (nonzero).  Two
-   vectors are on the same ray iff their primitive vectors are equal, and
-   the canonical vectors of a cone are primitive: so a vector's ray is
-   found among them by a binary search.  */
-static void
-primitive(fmpz * z, const fmpq * p)
-{
-    fmpz_t l, g;
-    slong j;
-
-    fmpz_init(l);
-    fmpz_init(g);
-    fmpz_one(l);
-    for (j = 0; j < 3; j++)
-        fmpz_lcm(l, l, fmpq_denref(p + j));
-    for (j = 0; j < 3; j++)
-    {
-        fmpz_divexact(z + j, l, fmpq_denref(p + j));
-        fmpz_mul(z + j, z + j, fmpq_numref(p + j));
-        fmpz_gcd(g, g, z + j);
-    }
-    for (j = 0; j < 3; j++)
-        fmpz_divexact(z + j, z + j, g);
-    fmpz_clear(l);
-    fmpz_clear(g);
-}
-
 /* The file line of an input row (of P) on each canonical vector of X:
    the rows are first stripped of their component in span S (the cone's
    lines for rays, its equalities for facets), as the canonical form
@@ -208,9 +181,12 @@ source_lines(wc_cmp_rep_struct * C, wc_cmp_vec * U, const fmpz_mat_t X,
         _wc_span_project(q, WC_ROW(P, j), r, dir);
         for (c = 0; c < 3; c++)
             fmpq_sub(p + c, fmpq_mat_entry(P, j, c), q + c);
+        /* Two vectors are on the same ray iff their primitive vectors
+           are equal, and the canonical vectors of a cone are primitive:
+           so a vector's ray is found among them by a binary search.  */
         if (!_wc_qv3_is_zero(p))
         {
-            primitive(z, p);
+            _wc_qvec_primitive(z, p, 3);
             key.v = z;
             hit = bsearch(&key, sorted, nx, sizeof(_wc_zrow),
                           _wc_zrow_cmp);

@@ -15,16 +15,8 @@
 #include <flint/fmpq.h>
 
 #include "core/error.h"
+#include "core/limits.h"
 #include "float/compare.h"
-
-/* Limits that keep hostile files from taking forever: the comparison is
-   near-linear in the k rows of a representation (the 3-D kernel's
-   conversion, then O(k log k) matching; doc/benchmarks.md), but grows
-   with the size of the numbers, and a float cone in R^3 from real code
-   has fewer rows, numbers far shorter.  */
-#define WC_FOREIGN_MAX_ROWS 100000
-#define WC_FOREIGN_MAX_CHARS 1000
-#define WC_FOREIGN_MAX_EXPONENT 1000
 
 /* A growing list of rows of 3 rationals, with the file line of each.  */
 typedef struct

@@ -40,6 +40,7 @@
 #include <flint/fmpq_vec.h>
 #include <flint/fmpz_vec.h>
 
+#include "core/limits.h"
 #include "float/compare.h"
 #include "float/angle.h"
 #include "exact/vec3.h"
@@ -214,15 +215,6 @@ max_angle_to_plane(double * w, const wc_cone_t K, const fmpq * n)
     _fmpq_vec_clear(m, 3);
     return a;
 }
-
-/* minimax_polar costs k^4 with k rays of B: above these many rays it
-   tries fewer candidates (triples, then pairs, then the single p_i: k^2
-   per face of K), and above the last only K's generators (k each), and
-   its answer is then only a lower bound -- still at least pi/2, so it
-   still exceeds every tolerance wc_compare accepts.  */
-#define WC_MINIMAX_TRIPLES 48
-#define WC_MINIMAX_PAIRS 400
-#define WC_MINIMAX_SINGLES 1000
 
 typedef struct
 {
@@ -511,10 +503,9 @@ face_facet(const wc_cone_t B, const wc_face_struct * F,
     _wc_zrow key, * hit;
 
     _wc_zvec3_cross(h, a, b);
-    _fmpz_vec_content(t, h, 3);
-    if (fmpz_is_zero(t))
+    if (_fmpz_vec_is_zero(h, 3))
         return -1;
-    _fmpz_vec_scalar_divexact_fmpz(h, h, 3, t);
+    _wc_zvec3_primitive(h, t);
     /* the sign: h.x <= 0 on B, and < 0 at a ray off F */
     for (c = 0; c < fmpz_mat_nrows(B->rays); c++)
         if (c != F->rays[0] && c != F->rays[1])

@@ -16,6 +16,7 @@
 #include "analysis/wrench.h"
 #include "analysis/kinematics.h"
 #include "core/problem.h"
+#include "core/limits.h"
 #include "analysis/stability.h"
 #include "analysis/sweep.h"
 
@@ -32,8 +33,7 @@ void wc_fprint_fmpq(FILE * out, const fmpq_t x);
    rounded to K digits after the point, half away from zero, computed
    exactly (no floating point); K < 0, the default, adds none.  The
    setting is the calling thread's and leaves JSON, cdd and certificates
-   exact and unchanged.  */
-#define WC_DECIMALS_MAX 50
+   exact and unchanged.  WC_DECIMALS_MAX is in core/limits.h.  */
 void wc_print_set_decimals(int K);
 int wc_print_decimals(void);
 

@@ -8,6 +8,7 @@
 #define WC_MODE_H
 
 #include "core/problem.h"
+#include "core/limits.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -18,10 +19,6 @@ extern "C" {
    touching ones.  Table 1 (velocity level, kinematic feasibility): s l r n
    on touching fixels, s a on near ones.  */
 typedef enum { WC_TABLE_CONE = 2, WC_TABLE_KINEMATIC = 1 } wc_mode_table;
-
-/* The most fixels a wrench cone is computed for (its cost grows as n^2;
-   see wrenchcone(1), LIMITS).  */
-#define WC_CONE_MAX_FIXELS 2000
 
 /* Check P (wc_problem_check), for Table 2 that P has at most
    WC_CONE_MAX_FIXELS fixels, and that mode has one letter per fixel of P,

@@ -1,4 +1,4 @@
-/* planbits.c -- which cells of an arrangement lie in a cone, for all
+/* cellbits.c -- which cells of an arrangement lie in a cone, for all
    cells at once, as a bitset.
 
    Copyright (C) 2026 the wrenchcone authors.
@@ -23,7 +23,7 @@
 
 #include <flint/fmpz_vec.h>
 
-#include "analysis/planparts.h"
+#include "analysis/cellset.h"
 
 /* The bitset of the cells with sign s (-1 or 1) on plane p.  */
 #define BITS(X, p, s) ((X)->bits + (2 * (p) + ((s) > 0)) * (X)->words)
@@ -235,10 +235,10 @@ by_lattice(ulong * out, const ulong * cand, const wc_cone_key * K,
 
         while (x != 0)
         {
-            slong i = w * FLINT_BITS + _wc_plan_ctz(x);
+            slong i = w * FLINT_BITS + _wc_cellset_ctz(x);
 
             x &= x - 1;
-            _wc_plan_cell_point(X->g, A, i);
+            _wc_cellset_point(X->g, A, i);
             if (wc_cone_contains(K->C, X->g))
                 out[w] |= UWORD(1) << (i % FLINT_BITS);
         }
