@@ -66,7 +66,6 @@ SH_TESTS = \
 	tests/cli-stability.sh \
 	tests/cli-plan.sh \
 	tests/corpus.sh \
-	tests/contract.sh \
 	tests/man-examples.sh \
 	tests/man-lint.sh \
 	tests/cdd-interop.sh \
