@@ -15,12 +15,15 @@
 # exit 0.  The scratch top also has python/ (the module) and lib/ (the
 # build's, holding lib/.libs/, where the module finds the library) for
 # the Python example, which is skipped, with a note, without python3.
+# The examples write their files in /tmp (so that running them leaves the
+# tree as it was: dist-files.sh would see their files); here /tmp/ in a
+# command stands for a scratch folder, so that runs do not share files.
 
 : "${WRENCHCONE:?WRENCHCONE is not set}"
 : "${top_srcdir:?top_srcdir is not set}"
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/readme.XXXXXX") || exit 99
 trap 'rm -rf "$tmp"' EXIT
-mkdir "$tmp/top" "$tmp/top/src" "$tmp/ex" || exit 99
+mkdir "$tmp/top" "$tmp/top/src" "$tmp/ex" "$tmp/tmp" || exit 99
 ln -s "$top_srcdir/data" "$tmp/top/data" || exit 99
 ln -s "$WRENCHCONE" "$tmp/top/src/wrenchcone" || exit 99
 ln -s "$top_srcdir/python" "$tmp/top/python" || exit 99
@@ -60,7 +63,8 @@ while [ "$i" -le "$count" ]; do
         fi
         env="PYTHONDONTWRITEBYTECODE=1 $pyenv" ;;
     esac
-    (cd "$tmp/top" && env $env sh -c "$cmd") > "$tmp/got" 2> "$tmp/err" < /dev/null
+    run=$(printf '%s\n' "$cmd" | sed "s|/tmp/|$tmp/tmp/|g")
+    (cd "$tmp/top" && env $env sh -c "$run") > "$tmp/got" 2> "$tmp/err" < /dev/null
     status=$?
     if [ "$status" -ne 0 ]; then
         echo "FAIL: README: \$ $cmd: exit status $status" >&2
