@@ -9,7 +9,7 @@
 #ifndef WC_TESTS_OLD_FACES_H
 #define WC_TESTS_OLD_FACES_H
 
-#include "check/checker.h"
+#include "check/faces.h"
 
 /* What _wc_check_moving_faces computes, by walking every cell of the
    arrangement: every sign string S(nudot) with a_in >= 0 at every
