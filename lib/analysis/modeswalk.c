@@ -22,7 +22,8 @@
    among the relevant planes' lines only, and reports the faces inside K.
 
    What it reports, and in which order, is what the walk of every plane
-   (exact/arrangement.c, and the independent copy tests/ref-modes.c)
+   (exact/arrangement.c, and the previous implementation kept in
+   tests/old-modes.c)
    reports inside K, so that each mode keeps the witness of the first
    face mapping to it there: the origin first; then plane by plane in the
    order of the columns; around plane p counter-clockwise from the

@@ -12,6 +12,7 @@
 
 #include "exact/vec3.h"
 #include "analysis/plancert.h"
+#include "core/certkind.h"
 #include "io/printutil.h"
 #include "io/print.h"
 #include "io/certprint.h"
@@ -98,7 +99,7 @@ wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
         _wc_plancert_clear(&C);
         return status;
     }
-    fputs("{\"kind\": \"plan-goal\",\n \"covers\": [\"goal\"],\n"
+    fputs("{\"kind\": \"" WC_CERT_KIND_PLAN "\",\n \"covers\": [\"goal\"],\n"
           " \"problem\": ", out);
     _wc_fprint_dyn_problem(out, P);
     fputs(",\n \"goal\": ", out);
@@ -192,7 +193,7 @@ wc_critical_certificate_fprint(FILE * out, const wc_problem_t P,
         return status;
     wc_problem_init(Q);
     wc_plan_init(R);
-    fputs("{\"kind\": \"critical-friction\",\n \"problem\": ", out);
+    fputs("{\"kind\": \"" WC_CERT_KIND_CRIT "\",\n \"problem\": ", out);
     _wc_fprint_dyn_problem(out, P);
     fprintf(out, ",\n \"found\": %s, \"empty_at_zero\": %s, \"lo\": ",
             _wc_tf(C->found), _wc_tf(C->empty_at_zero));

@@ -12,6 +12,7 @@
 #include <flint/fmpz_vec.h>
 
 #include "exact/vec3.h"
+#include "core/certkind.h"
 #include "io/print.h"
 #include "io/printutil.h"
 
@@ -402,7 +403,7 @@ wc_certificate_fprint(FILE * out, const wc_certificate_t C,
                   "transposition theorem)\n", out);
         return _wc_fprint_done(out);
     }
-    fputs(WC_JSON_OPEN "\"kind\": \"mode-feasibility\", \"mode\": ", out);
+    fputs(WC_JSON_OPEN "\"kind\": \"" WC_CERT_KIND_MODE "\", \"mode\": ", out);
     wc_fprint_json_string(out, C->mode);
     fprintf(out, ", \"feasible\": %s", _wc_tf(C->feasible));
     if (C->feasible)

@@ -14,6 +14,7 @@
 
 #include "exact/vec3.h"
 #include "analysis/stabcert.h"
+#include "core/certkind.h"
 #include "io/printutil.h"
 #include "io/print.h"
 #include "io/certprint.h"
@@ -101,7 +102,7 @@ wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
         _wc_stabcert_clear(&C);
         return status;
     }
-    fputs("{\"kind\": \"stability-set\",\n \"covers\": [\"strong\"],\n"
+    fputs("{\"kind\": \"" WC_CERT_KIND_SET "\",\n \"covers\": [\"strong\"],\n"
           " \"problem\": ", out);
     _wc_fprint_dyn_problem(out, P);
     fputs(",\n \"strong\": ", out);

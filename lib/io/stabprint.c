@@ -8,6 +8,7 @@
 
 #include <string.h>
 
+#include "core/certkind.h"
 #include "io/print.h"
 #include "io/printutil.h"
 
@@ -440,7 +441,7 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
 {
     slong i;
 
-    fputs("{\"kind\": \"strong-stability\",\n \"problem\": ", out);
+    fputs("{\"kind\": \"" WC_CERT_KIND_STABILITY "\",\n \"problem\": ", out);
     _wc_fprint_dyn_problem(out, P);
     fputs(",\n \"wrench\": ", out);
     wc_fprint_qvec(out, R->g, 3, 1);
