@@ -255,17 +255,23 @@ else
     # WC_TEST_MULTIPLIER widens the run.
     stride=4
     [ "${WC_TEST_MULTIPLIER:-1}" -gt 1 ] 2>/dev/null && stride=1
+    mkdir "$tmp/rt" || exit 99
+    : >"$tmp/rt/holds.req"
+    : >"$tmp/rt/holds.list"
+    : >"$tmp/rt/tampered.req"
+    : >"$tmp/rt/tampered.list"
+    feasible_modes=
+    n=0
     for spec in disk-two-fixels:tt section4:tn peg-in-hole:ttn three-fixels:nnn; do
         problem="$data/${spec%:*}.wc"
-        feasible_modes=
         every=1
         [ "${spec%:*}" = peg-in-hole ] && every=$stride
         k=0
         for mode in $(modes "${spec#*:}"); do
             k=$((k + 1))
             [ $((k % every)) -eq 0 ] || continue
-            cert="$tmp/cert.json"
-            rm -f "$cert"
+            n=$((n + 1))
+            cert="$tmp/rt/$n.json"
             "$WRENCHCONE" feasible --certificate="$cert" "$problem" "$mode" \
                 >/dev/null 2>"$tmp/err"
             fstatus=$?
@@ -275,40 +281,62 @@ else
                 sed 's/^/    /' "$tmp/err"
                 continue
             fi
-            run /dev/null verify "$cert"
-            case $(cat "$tmp/out") in
-            "certificate holds: mode $mode is feasible")
-                feasible_modes="$feasible_modes $mode" ;;
-            "certificate holds: mode $mode is infeasible") ;;
-            *)  fail "$name" "does not hold:"
-                sed 's/^/    /' "$tmp/out" "$tmp/err" ;;
-            esac
-            if [ "$status" -ne 0 ] || [ -s "$tmp/err" ]; then
-                fail "$name" "verify: exit status $status"
-            fi
+            printf '{"command": "verify", "certfile": "%s"}\n' "$cert" >>"$tmp/rt/holds.req"
+            printf '%s %s %s\n' "${spec%:*}" "$mode" "$name" >>"$tmp/rt/holds.list"
             for how in row relation answer; do
-                tamper "$how" "$cert" "$tmp/tampered.json"
-                if cmp -s "$cert" "$tmp/tampered.json"; then
+                tamper "$how" "$cert" "$tmp/rt/$n-$how.json"
+                if cmp -s "$cert" "$tmp/rt/$n-$how.json"; then
                     fail "$name" "tampering ($how) changed nothing"
                     continue
                 fi
-                run /dev/null verify "$tmp/tampered.json"
-                case $(cat "$tmp/out") in
-                "certificate does not hold: "?*) ;;
-                *)  fail "$name" "tampered ($how): unexpected stdout:"
-                    sed 's/^/    /' "$tmp/out" "$tmp/err" ;;
-                esac
-                if [ "$status" -ne 4 ] || [ -s "$tmp/err" ]; then
-                    fail "$name" "tampered ($how): exit status $status, expected 4"
-                fi
+                printf '{"command": "verify", "certfile": "%s"}\n' "$tmp/rt/$n-$how.json" >>"$tmp/rt/tampered.req"
+                printf '%s %s (tampered, %s)\n' "$mode" "$name" "$how" >>"$tmp/rt/tampered.list"
             done
         done
-        # the paper's reference results: Figure 5's feasible modes
-        if [ "${spec%:*}" = disk-two-fixels ] &&
-            [ "$feasible_modes" != " ss sl sr sn ls ll rs rr ns nn" ]; then
-            fail "figure 5 modes" "feasible:$feasible_modes"
-        fi
     done
+    # Each certificate holds, and each tampered one does not: the
+    # answers of one `wrenchcone batch` process, each exactly what
+    # `verify --format=json` prints for its file.
+    "$WRENCHCONE" batch <"$tmp/rt/holds.req" >"$tmp/rt/holds.out" 2>"$tmp/err"
+    status=$?
+    if [ "$status" -ne 0 ] || [ -s "$tmp/err" ]; then
+        fail "round trip" "batch verify: exit status $status, expected 0"
+        sed 's/^/    /' "$tmp/err"
+    fi
+    [ "$(wc -l <"$tmp/rt/holds.out")" -eq "$(wc -l <"$tmp/rt/holds.list")" ] ||
+        fail "round trip" "$(wc -l <"$tmp/rt/holds.out") answers to $(wc -l <"$tmp/rt/holds.list") certificates"
+    while read -r problem mode name; do
+        IFS= read -r answer <&3
+        prefix='{"format": "wrenchcone-json/1", "holds": true, "mode": "'$mode'", "feasible": '
+        case $answer in
+        "${prefix}true}")
+            [ "$problem" = disk-two-fixels ] &&
+                feasible_modes="$feasible_modes $mode" ;;
+        "${prefix}false}") ;;
+        *)  fail "$name" "does not hold:"
+            printf '    %s\n' "$answer" ;;
+        esac
+    done <"$tmp/rt/holds.list" 3<"$tmp/rt/holds.out"
+    # the paper's reference results: Figure 5's feasible modes
+    if [ "$feasible_modes" != " ss sl sr sn ls ll rs rr ns nn" ]; then
+        fail "figure 5 modes" "feasible:$feasible_modes"
+    fi
+    "$WRENCHCONE" batch <"$tmp/rt/tampered.req" >"$tmp/rt/tampered.out" 2>"$tmp/err"
+    status=$?
+    if [ "$status" -ne 4 ] || [ -s "$tmp/err" ]; then
+        fail "round trip" "batch verify of the tampered: exit status $status, expected 4"
+        sed 's/^/    /' "$tmp/err"
+    fi
+    [ "$(wc -l <"$tmp/rt/tampered.out")" -eq "$(wc -l <"$tmp/rt/tampered.list")" ] ||
+        fail "round trip" "$(wc -l <"$tmp/rt/tampered.out") answers to $(wc -l <"$tmp/rt/tampered.list") tampered certificates"
+    while read -r mode name; do
+        IFS= read -r answer <&3
+        case $answer in
+        '{"format": "wrenchcone-json/1", "holds": false, "mode": "'"$mode"'", "feasible": '*', "reason": "'?*'"}') ;;
+        *)  fail "$name" "unexpected answer:"
+            printf '    %s\n' "$answer" ;;
+        esac
+    done <"$tmp/rt/tampered.list" 3<"$tmp/rt/tampered.out"
 
     # What feasible prints with --format=json is a certificate too.
     run /dev/null feasible --format=json "$data/disk-two-fixels.wc" ln

@@ -3,7 +3,8 @@
 #   1. for every certificate in tests/certs and every certificate that
 #      `wrenchcone feasible --certificate` (every Table 1 mode) and
 #      `wrenchcone classify --certificate` (a few wrenches) write for the
-#      data files, as text and as JSON, and for standard input, a missing
+#      data files (the bulk of them written by one `wrenchcone batch`
+#      process, with "certificate": true), as text and as JSON, and for standard input, a missing
 #      file, a directory, an empty file and usage errors, it prints the
 #      same bytes on stdout and stderr and exits with the same status as
 #      `wrenchcone verify` (a usage error's last line names the program
@@ -32,20 +33,35 @@ compared=0
 fail() { echo "FAIL: $*" >&2; failed=1; }
 
 # same NAME STDIN ARGS...: `wrenchcone verify ARGS` and `wrenchcone-verify
-# ARGS` with standard input from STDIN agree byte for byte.
+# ARGS` with standard input from STDIN agree byte for byte.  Each run's
+# stdout and stderr are appended to one file per program and stream,
+# between lines naming the case and (stdout) the exit status, and
+# check_same compares the files once: a cmp per case cost more CPU than
+# the case.
 same() {
     name=$1 in=$2
     shift 2
-    "$WRENCHCONE" verify "$@" < "$in" > "$tmp/o1" 2> "$tmp/e1"
+    for f in o1 e1 o2 e2.raw; do
+        printf '== %s\n' "$name" >> "$tmp/$f"
+    done
+    "$WRENCHCONE" verify "$@" < "$in" >> "$tmp/o1" 2>> "$tmp/e1"
     s1=$?
-    "$V" "$@" < "$in" > "$tmp/o2" 2> "$tmp/e2.raw"
+    "$V" "$@" < "$in" >> "$tmp/o2" 2>> "$tmp/e2.raw"
     s2=$?
+    printf '\n== exit %s\n' "$s1" >> "$tmp/o1"
+    printf '\n== exit %s\n' "$s2" >> "$tmp/o2"
+    printf '\n==\n' >> "$tmp/e1"
+    printf '\n==\n' >> "$tmp/e2.raw"
+    compared=$((compared + 1))
+}
+
+# check_same: every case so far agreed (the status, stdout, stderr).
+check_same() {
     sed "s/^Try 'wrenchcone-verify --help'/Try 'wrenchcone verify --help'/" \
         "$tmp/e2.raw" > "$tmp/e2"
-    compared=$((compared + 1))
-    [ "$s1" -eq "$s2" ] || fail "$name: exit status $s2, wrenchcone verify's $s1"
-    cmp -s "$tmp/o1" "$tmp/o2" || { fail "$name: stdout differs"; diff "$tmp/o1" "$tmp/o2" >&2; }
-    cmp -s "$tmp/e1" "$tmp/e2" || { fail "$name: stderr differs"; diff "$tmp/e1" "$tmp/e2" >&2; }
+    cmp -s "$tmp/o1" "$tmp/o2" || { fail "stdout or exit status differs"; diff -u "$tmp/o1" "$tmp/o2" >&2; }
+    cmp -s "$tmp/e1" "$tmp/e2" || { fail "stderr differs"; diff -u "$tmp/e1" "$tmp/e2" >&2; }
+    : > "$tmp/o1"; : > "$tmp/o2"; : > "$tmp/e1"; : > "$tmp/e2.raw"
 }
 
 # both NAME FILE: as text and as JSON.
@@ -80,24 +96,68 @@ modes() {
         }'
 }
 
+# The certificates: the first mode and the first wrench of each problem
+# by `--certificate=FILE` command lines, the rest by one `wrenchcone
+# batch` process, whose answers end with the document --certificate
+# writes, on one line.  $tmp/list names each certificate and its file.
+: > "$tmp/requests"
+: > "$tmp/list"
 for problem in "$data"/*.wc; do
     p=$(basename "$problem" .wc)
+    P=$(printf '"%s"' "$problem")
+    first=1
     for mode in $(modes "$problem"); do
         cert=$tmp/$p-$mode.json
-        "$WRENCHCONE" feasible --certificate="$cert" "$problem" "$mode" \
-            > /dev/null 2> "$tmp/err" \
-            || { fail "feasible --certificate $p $mode: $(cat "$tmp/err")"; continue; }
-        both "feasible $p $mode" "$cert"
+        if [ "$first" -eq 1 ]; then
+            first=0
+            "$WRENCHCONE" feasible --certificate="$cert" "$problem" "$mode" \
+                > /dev/null 2> "$tmp/err" \
+                || { fail "feasible --certificate $p $mode: $(cat "$tmp/err")"; continue; }
+        else
+            printf '{"command": "feasible", "problem": %s, "mode": "%s", "certificate": true}\n' \
+                "$P" "$mode" >> "$tmp/requests"
+        fi
+        printf '%s %s\n' "$cert" "feasible $p $mode" >> "$tmp/list"
     done
+    k=0
     for g in "0 -1 0" "1 1 0" "1 -1 0" "-1 -1 -1" "0 1 0"; do
-        cert=$tmp/$p-classify.json
-        # shellcheck disable=SC2086
-        "$WRENCHCONE" classify --certificate="$cert" "$problem" $g \
-            > /dev/null 2> "$tmp/err" \
-            || { fail "classify --certificate $p $g: $(cat "$tmp/err")"; continue; }
-        both "classify $p $g" "$cert"
+        k=$((k + 1))
+        cert=$tmp/$p-classify-$k.json
+        if [ "$k" -eq 1 ]; then
+            # shellcheck disable=SC2086
+            "$WRENCHCONE" classify --certificate="$cert" "$problem" $g \
+                > /dev/null 2> "$tmp/err" \
+                || { fail "classify --certificate $p $g: $(cat "$tmp/err")"; continue; }
+        else
+            # shellcheck disable=SC2086
+            set -- $g
+            printf '{"command": "classify", "problem": %s, "wrench": ["%s", "%s", "%s"], "certificate": true}\n' \
+                "$P" "$1" "$2" "$3" >> "$tmp/requests"
+        fi
+        printf '%s %s\n' "$cert" "classify $p $g" >> "$tmp/list"
     done
 done
+"$WRENCHCONE" batch < "$tmp/requests" > "$tmp/answers" 2> "$tmp/err" \
+    || fail "batch: exit status $?: $(cat "$tmp/err")"
+[ "$(wc -l < "$tmp/requests")" -eq "$(wc -l < "$tmp/answers")" ] \
+    || fail "batch: $(wc -l < "$tmp/answers") answers to $(wc -l < "$tmp/requests") requests"
+# Each answer's last member is the certificate; write it to its file (the
+# files listed without a command line of their own, in order).
+while read -r cert name; do
+    [ -f "$cert" ] || printf '%s\n' "$cert"
+done < "$tmp/list" > "$tmp/batch-files"
+awk -v files="$tmp/batch-files" '
+    { if ((getline f < files) <= 0) { print "no file for answer " NR > "/dev/stderr"; exit 1 }
+      i = index($0, ", \"certificate\": {")
+      if (i == 0 || substr($0, length($0)) != "}") {
+          print "answer " NR " has no certificate: " $0 > "/dev/stderr"; exit 1 }
+      print substr($0, i + 17, length($0) - i - 17) > f; close(f) }' \
+    "$tmp/answers" || fail "batch answers without certificates"
+while read -r cert name; do
+    [ -s "$cert" ] || { fail "$name: no certificate"; continue; }
+    both "$name" "$cert"
+done < "$tmp/list"
+check_same
 [ "$compared" -ge 300 ] || fail "only $compared comparisons"
 
 # Standard input, files that are not certificates, usage.
@@ -114,6 +174,7 @@ same "unknown format" /dev/null --format=cdd "$certs/figure5-ln.json"
 same "missing format" /dev/null "$certs/figure5-ln.json" --format
 same "unknown option" /dev/null --bogus "$certs/figure5-ln.json"
 same "options after the operand" /dev/null "$certs/figure5-ln.json" --format=json
+check_same
 
 # The program's own help and version.
 "$V" --help > "$tmp/o" 2> "$tmp/e" && [ ! -s "$tmp/e" ] \
