@@ -20,6 +20,15 @@
 #include "core/random.h"
 #include "api/batch.h"
 
+/* The rows that many commands share.  */
+#define PROBLEM_OPERAND \
+    { "problem", _WC_ARG_INPUT, "PROBLEM", NULL, NULL, NULL, 0, 0, \
+      offsetof(_wc_request, problem), 0, 0, NULL, NULL }
+#define FORMAT_TEXT_JSON \
+    { "format", _WC_ARG_CHOICE, "FMT", "text|json", "format", NULL, 0, 0, \
+      offsetof(_wc_request, format), _WC_ARG_CLI, 0, \
+      "text (default) or json", NULL }
+
 /* The rules between values that no single row can state.  Messages name
    the options as the request or the command line wrote them.  */
 
@@ -109,10 +118,7 @@ check_draw(char * msg, size_t size, const _wc_arg ** culprit,
 }
 
 static const _wc_arg cone_operands[] = {
-    { "problem", _WC_ARG_INPUT, "PROBLEM", NULL, NULL, NULL, 0, 0,
-      offsetof(_wc_request, problem), 0, 0,
-      NULL,
-      NULL },
+    PROBLEM_OPERAND,
     { "mode", _WC_ARG_WORD, "MODE", NULL, NULL, NULL, 0, 0,
       offsetof(_wc_request, mode), _WC_ARG_OPTIONAL, 0,
       NULL,
@@ -152,10 +158,7 @@ static const _wc_arg cone_options[] = {
 };
 
 static const _wc_arg modes_operands[] = {
-    { "problem", _WC_ARG_INPUT, "PROBLEM", NULL, NULL, NULL, 0, 0,
-      offsetof(_wc_request, problem), 0, 0,
-      NULL,
-      NULL },
+    PROBLEM_OPERAND,
     { NULL }
 };
 
@@ -173,10 +176,7 @@ static const _wc_arg modes_options[] = {
 };
 
 static const _wc_arg feasible_operands[] = {
-    { "problem", _WC_ARG_INPUT, "PROBLEM", NULL, NULL, NULL, 0, 0,
-      offsetof(_wc_request, problem), 0, 0,
-      NULL,
-      NULL },
+    PROBLEM_OPERAND,
     { "mode", _WC_ARG_WORD, "MODE", NULL, NULL, NULL, 0, 0,
       offsetof(_wc_request, mode), 0, 0,
       NULL,
@@ -198,10 +198,7 @@ static const _wc_arg feasible_options[] = {
 };
 
 static const _wc_arg classify_operands[] = {
-    { "problem", _WC_ARG_INPUT, "PROBLEM", NULL, NULL, NULL, 0, 0,
-      offsetof(_wc_request, problem), 0, 0,
-      NULL,
-      NULL },
+    PROBLEM_OPERAND,
     { "wrench", _WC_ARG_WRENCH, "FX FY TAU", NULL, NULL, NULL, 0, 0,
       offsetof(_wc_request, wrench), 0, 0,
       NULL,
@@ -223,18 +220,12 @@ static const _wc_arg classify_options[] = {
       "list can be exponentially long: a wrench that three of\n"
       "t touching fixels hold is held by 2^(t-3) strings",
       NULL },
-    { "format", _WC_ARG_CHOICE, "FMT", "text|json", "format", NULL, 0, 0,
-      offsetof(_wc_request, format), _WC_ARG_CLI, 0,
-      "text (default) or json",
-      NULL },
+    FORMAT_TEXT_JSON,
     { NULL }
 };
 
 static const _wc_arg stability_operands[] = {
-    { "problem", _WC_ARG_INPUT, "PROBLEM", NULL, NULL, NULL, 0, 0,
-      offsetof(_wc_request, problem), 0, 0,
-      NULL,
-      NULL },
+    PROBLEM_OPERAND,
     { NULL }
 };
 
@@ -256,18 +247,12 @@ static const _wc_arg stability_options[] = {
       "also write a certificate (JSON) that the strongly\n"
       "stable set is exact, for wrenchcone verify",
       NULL },
-    { "format", _WC_ARG_CHOICE, "FMT", "text|json", "format", NULL, 0, 0,
-      offsetof(_wc_request, format), _WC_ARG_CLI, 0,
-      "text (default) or json",
-      NULL },
+    FORMAT_TEXT_JSON,
     { NULL }
 };
 
 static const _wc_arg plan_operands[] = {
-    { "problem", _WC_ARG_INPUT, "PROBLEM", NULL, NULL, NULL, 0, 0,
-      offsetof(_wc_request, problem), 0, 0,
-      NULL,
-      NULL },
+    PROBLEM_OPERAND,
     { "wrench", _WC_ARG_WRENCH, "FX FY TAU", NULL, NULL, NULL, 0, 0,
       offsetof(_wc_request, wrench), _WC_ARG_OPTIONAL, 0,
       NULL,
@@ -289,18 +274,12 @@ static const _wc_arg plan_options[] = {
       "also write a certificate (JSON) that G_goal is\n"
       "exact, for wrenchcone verify (not with a wrench)",
       NULL },
-    { "format", _WC_ARG_CHOICE, "FMT", "text|json", "format", NULL, 0, 0,
-      offsetof(_wc_request, format), _WC_ARG_CLI, 0,
-      "text (default) or json",
-      NULL },
+    FORMAT_TEXT_JSON,
     { NULL }
 };
 
 static const _wc_arg sweep_operands[] = {
-    { "problem", _WC_ARG_INPUT, "PROBLEM", NULL, NULL, NULL, 0, 0,
-      offsetof(_wc_request, problem), 0, 0,
-      NULL,
-      NULL },
+    PROBLEM_OPERAND,
     { NULL }
 };
 
@@ -349,18 +328,12 @@ static const _wc_arg verify_operands[] = {
 };
 
 static const _wc_arg verify_options[] = {
-    { "format", _WC_ARG_CHOICE, "FMT", "text|json", "format", NULL, 0, 0,
-      offsetof(_wc_request, format), _WC_ARG_CLI, 0,
-      "text (default) or json",
-      NULL },
+    FORMAT_TEXT_JSON,
     { NULL }
 };
 
 static const _wc_arg compare_operands[] = {
-    { "problem", _WC_ARG_INPUT, "PROBLEM", NULL, NULL, NULL, 0, 0,
-      offsetof(_wc_request, problem), 0, 0,
-      NULL,
-      NULL },
+    PROBLEM_OPERAND,
     { "mode", _WC_ARG_WORD, "MODE", NULL, NULL, NULL, 0, 0,
       offsetof(_wc_request, mode), 0, 0,
       NULL,
@@ -377,10 +350,7 @@ static const _wc_arg compare_options[] = {
       offsetof(_wc_request, tol), 0, 0,
       "tolerance in radians, 0 <= T < pi/2 (default 1e-9)",
       NULL },
-    { "format", _WC_ARG_CHOICE, "FMT", "text|json", "format", NULL, 0, 0,
-      offsetof(_wc_request, format), _WC_ARG_CLI, 0,
-      "text (default) or json",
-      NULL },
+    FORMAT_TEXT_JSON,
     { NULL }
 };
 
@@ -422,10 +392,7 @@ static const _wc_arg random_options[] = {
 };
 
 static const _wc_arg draw_operands[] = {
-    { "problem", _WC_ARG_INPUT, "PROBLEM", NULL, NULL, NULL, 0, 0,
-      offsetof(_wc_request, problem), 0, 0,
-      NULL,
-      NULL },
+    PROBLEM_OPERAND,
     { NULL }
 };
 
@@ -475,10 +442,7 @@ static const _wc_arg draw_options[] = {
 };
 
 static const _wc_arg report_operands[] = {
-    { "problem", _WC_ARG_INPUT, "PROBLEM", NULL, NULL, NULL, 0, 0,
-      offsetof(_wc_request, problem), 0, 0,
-      NULL,
-      NULL },
+    PROBLEM_OPERAND,
     { NULL }
 };
 
