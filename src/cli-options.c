@@ -390,27 +390,26 @@ print_request(_wc_request * R, const _wc_command_schema * S)
     {
         _wc_input * in = (_wc_input *) (void *) ((char *) R + a->offset);
         char * text = NULL;
-        size_t len = 0, i;
+        size_t len = 0;
 
         if (a->kind != _WC_ARG_INPUT || in->stream == NULL)
             continue;
         status = _wc_input_read(&text, &len, in, err);
-        for (i = 0; status == WC_OK && i < sizeof R->owned / sizeof R->owned[0]
-             && R->owned[i] != NULL; i++)
-            ;
-        if (status == WC_OK && i == sizeof R->owned / sizeof R->owned[0])
-            status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
-                                  "out of memory");
         if (status == WC_OK)
         {
             text[len] = '\0';
-            R->owned[i] = text;
+            if (_wc_request_keep(R, text) == NULL)
+                status = wc_error_set(err, WC_EINTERNAL, NULL, 0, 0,
+                                      "out of memory");
+        }
+        else
+            free(text);
+        if (status == WC_OK)
+        {
             in->text = text;
             in->len = len;
             in->stream = NULL;
         }
-        else
-            free(text);
     }
     if (status != WC_OK)
         cli_report(err, status);

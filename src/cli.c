@@ -48,15 +48,6 @@ cli_usage_error(const char * cmd, const char * fmt, const char * arg)
     return WC_EUSAGE;
 }
 
-int
-cli_load_problem(wc_problem_t P, const char * path, wc_error_t err)
-{
-    _wc_input in;
-
-    cli_input(&in, path);
-    return _wc_load_problem(P, &in, err);
-}
-
 /* Only a file this run created is ever removed -- never a device or
    someone's file.  */
 int

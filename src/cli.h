@@ -39,7 +39,6 @@ struct cli_command
 extern const cli_command cli_commands[];
 
 
-typedef enum { FMT_TEXT, FMT_JSON, FMT_CDD, FMT_INE, FMT_EXT } cli_format;
 
 /* --- cli.c: messages, inputs, output --- */
 
@@ -52,10 +51,6 @@ int cli_report(const wc_error_t err, int status);
    when cmd is not NULL); returns WC_EUSAGE.  */
 int cli_usage_error(const char * cmd, const char * fmt, const char * arg);
 
-int cli_load_problem(wc_problem_t P, const char * path, wc_error_t err);
-
-/* The --format of R (text when not given).  */
-#define cli_format_of(R) ((cli_format) ((R)->format < 0 ? FMT_TEXT : (R)->format))
 
 /* Progress on stderr (cli-progress.c): cli_progress_force for
    --progress, cli_progress_start before a command runs (it installs the

@@ -12,7 +12,6 @@
 
 #include <config.h>
 
-#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -56,18 +55,25 @@ _wc_request_clear(_wc_request * R)
 }
 
 char *
-_wc_request_own(_wc_request * R, const char * s)
+_wc_request_keep(_wc_request * R, char * p)
 {
     size_t i;
 
-    for (i = 0; i < sizeof R->owned / sizeof R->owned[0]; i++)
+    for (i = 0; p != NULL && i < sizeof R->owned / sizeof R->owned[0]; i++)
         if (R->owned[i] == NULL)
-        {
-            if ((R->owned[i] = malloc(strlen(s) + 1)) != NULL)
-                strcpy(R->owned[i], s);
-            return R->owned[i];
-        }
+            return R->owned[i] = p;
+    free(p);
     return NULL;
+}
+
+char *
+_wc_request_own(_wc_request * R, const char * s)
+{
+    char * p = malloc(strlen(s) + 1);
+
+    if (p != NULL)
+        strcpy(p, s);
+    return _wc_request_keep(R, p);
 }
 
 /* The place of word in "a|b|c", or -1.  */
@@ -132,8 +138,9 @@ whole(unsigned long long * v, const char * s, unsigned long long max)
     return 1;
 }
 
-const char *
-_wc_arg_say_bad(char * msg, size_t size, const _wc_arg * a, const char * s,
+/* The message for a bad value s of row a.  */
+static const char *
+say_bad(char * msg, size_t size, const _wc_arg * a, const char * s,
                 int json)
 {
     char key[64], list[160];
@@ -186,7 +193,6 @@ _wc_arg_set_text(_wc_request * R, const _wc_arg * a, const char * s,
     case _WC_ARG_ANGLE:
         /* A report's tolerance only: every decision of the comparison
            is exact.  */
-        errno = 0;
         t = strtod(s, &end);
         if (end == s || *end != '\0' || !(t >= 0 && t < 1.5707963))
             break;
@@ -215,7 +221,7 @@ _wc_arg_set_text(_wc_request * R, const _wc_arg * a, const char * s,
         *FIELD(R, a, const char *) = s;
         return NULL;
     }
-    return _wc_arg_say_bad(msg, size, a, s, R->from_request);
+    return say_bad(msg, size, a, s, R->from_request);
 }
 
 void

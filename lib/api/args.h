@@ -26,12 +26,10 @@ const char * _wc_arg_set_text(_wc_request * R, const _wc_arg * a,
                               const char * s, char * msg, size_t size);
 
 /* A copy of s that R owns (freed by _wc_request_clear), or NULL when out
-   of memory or when R owns too many.  */
+   of memory or when R owns too many.  _keep: p itself (malloc'd), freed
+   at once when R cannot keep it.  */
 char * _wc_request_own(_wc_request * R, const char * s);
-
-/* The message for a bad value s of row a.  */
-const char * _wc_arg_say_bad(char * msg, size_t size, const _wc_arg * a,
-                             const char * s, int json);
+char * _wc_request_keep(_wc_request * R, char * p);
 
 /* A wrench given as three values v[0..3) (operands, or a JSON array).  */
 void _wc_arg_set_wrench(_wc_request * R, const _wc_arg * a,
