@@ -8,7 +8,12 @@ For each kind of certificate (mode-feasibility, strong-stability,
 stability-set, plan-goal, critical-friction) the certificates are written by the program for the files
 of DATA_DIR; then, one at a time, one leaf or one array or one key of one
 certificate is changed, the JSON written again and `wrenchcone verify` run
-on it.  The changes, by what they touch:
+on it.  The program is started a few times only: the certificates are
+written, and the changed ones verified, by `wrenchcone batch` (verify
+requests answer as `wrenchcone verify` exits: "holds" true or false, or
+an error record); the first few changes of each kind also go through
+`wrenchcone verify` itself, which must agree and print as wrenchcone(1)
+says.  The changes, by what they touch:
 
   a rational (a "p/q" string or a JSON integer): +1, negate, 0, times 2;
   a boolean: flipped;
@@ -128,6 +133,22 @@ def run(argv, path=None):
     return p.returncode, p.stdout, p.stderr
 
 
+def batch(W, requests, tmp):
+    """The answers of `wrenchcone batch` to the requests (dicts), as
+    parsed JSON objects, one per request."""
+    path = os.path.join(tmp, 'requests.jsonl')
+    with open(path, 'w') as f:
+        for r in requests:
+            f.write(json.dumps(r) + '\n')
+    rc, o, e = run([W, 'batch', path])
+    lines = o.decode().splitlines()
+    if rc is None or len(lines) != len(requests):
+        raise Failure('batch of %d requests: exit %s, %d answers: %s'
+                      % (len(requests), rc, len(lines),
+                         e.decode(errors='replace')))
+    return [json.loads(x) for x in lines]
+
+
 # ---------------------------------------------------------------------
 # Writing the certificates.
 
@@ -151,47 +172,72 @@ def gen_certs(W, data, tmp, rng):
     mk = os.path.join(tmp, 'disk-two-fixels-mu-k.wc')
     open(mk, 'w').write(src.replace('friction 1\n', 'friction 1 1/2\n'))
     probs.append(('disk-two-fixels-mu-k', mk))
-    cert = os.path.join(tmp, 'cert.json')
+    # The certificates come in batch answers, under "certificate".
+    def written(requests):
+        for r in requests:
+            r['certificate'] = True
+        got = batch(W, requests, tmp)
+        for r, a in zip(requests, got):
+            if 'certificate' not in a:
+                raise Failure('%s: no certificate: %s'
+                              % (json.dumps(r), json.dumps(a)))
+        return [a['certificate'] for a in got]
 
-    def write(kind, name, argv):
-        if os.path.exists(cert):
-            os.remove(cert)
-        rc, o, e = run([W] + argv)
-        if rc != 0 or not os.path.exists(cert):
-            raise Failure('%s: exit %s: %s' % (' '.join(argv), rc,
-                                                e.decode(errors='replace')))
-        text = open(cert).read()
-        rc, o, e = run([W, 'verify'], cert)
-        if rc != 0:
-            raise Failure('%s: its certificate does not verify (%s): %s'
-                          % (' '.join(argv), rc, (o + e).decode()))
-        out[kind].append((name, text))
-        return json.loads(text)
-
-    for name, f in probs:
-        d = write('stability-set', name, ['stability', '--certificate='
-                                          + cert, f])
+    sets = written([{'command': 'stability', 'problem': f}
+                    for name, f in probs])
+    modes = batch(W, [{'command': 'modes', 'problem': f}
+                      for name, f in probs], tmp)
+    named, requests = [], []
+    for (name, f), d, m in zip(probs, sets, modes):
+        out['stability-set'].append((name, json.dumps(d)))
         states = [x['state'] for x in d['problem']['fixels']]
-        rc, o, e = run([W, 'modes', f])
-        feasible = o.decode().split()
-        infeasible = [m for m in all_modes(states) if m not in feasible]
+        feasible = m['modes']
+        infeasible = [x for x in all_modes(states) if x not in feasible]
         picked = rng.sample(feasible, min(2, len(feasible))) \
             + rng.sample(infeasible, min(2, len(infeasible)))
-        for m in picked:
-            write('mode-feasibility', '%s %s' % (name, m),
-                  ['feasible', '--certificate=' + cert, f, m])
+        for x in picked:
+            named.append(('mode-feasibility', '%s %s' % (name, x)))
+            requests.append({'command': 'feasible', 'problem': f,
+                             'mode': x})
         wrenches = [('-1', '-1', '-1'), ('0', '-1', '0'), ('0', '1', '0')]
         wrenches.append(tuple(str(rng.randint(-3, 3)) for _ in range(3)))
         for g in wrenches:
-            write('strong-stability', '%s %s' % (name, ' '.join(g)),
-                  ['classify', '--certificate=' + cert, f, '--'] + list(g))
+            named.append(('strong-stability', '%s %s' % (name, ' '.join(g))))
+            requests.append({'command': 'classify', 'problem': f,
+                             'wrench': list(g)})
     # the sets of a plan, on the two smallest problems
     for name in ('disk-two-fixels', 'disk-two-fixels-insert'):
-        f = os.path.join(data, name + '.wc')
-        write('plan-goal', name, ['plan', '--certificate=' + cert, f])
-    write('critical-friction', 'disk-two-fixels-insert',
-          ['sweep', '--critical', '--width=1/4', '--certificate=' + cert,
-           os.path.join(data, 'disk-two-fixels-insert.wc')])
+        named.append(('plan-goal', name))
+        requests.append({'command': 'plan',
+                         'problem': os.path.join(data, name + '.wc')})
+    named.append(('critical-friction', 'disk-two-fixels-insert'))
+    requests.append({'command': 'sweep', 'critical': True, 'width': '1/4',
+                     'problem': os.path.join(data,
+                                             'disk-two-fixels-insert.wc')})
+    for (kind, name), d in zip(named, written(requests)):
+        out[kind].append((name, json.dumps(d)))
+
+    # Each certificate holds, and the command line writes the same one.
+    every = [(k, n, t) for k in out for n, t in out[k]]
+    paths = []
+    for i, (k, n, t) in enumerate(every):
+        paths.append(os.path.join(tmp, 'cert-%d.json' % i))
+        open(paths[-1], 'w').write(t)
+    for (k, n, t), a in zip(every, batch(W, [{'command': 'verify',
+                                             'certfile': x}
+                                            for x in paths], tmp)):
+        if a.get('holds') is not True:
+            raise Failure('%s certificate of %s does not verify: %s'
+                          % (k, n, json.dumps(a)))
+    cert = os.path.join(tmp, 'cert.json')
+    f = probs[0][1]
+    for argv, text in ((['stability', f], out['stability-set'][0][1]),
+                       (['plan', os.path.join(data, 'disk-two-fixels.wc')],
+                        out['plan-goal'][0][1])):
+        rc, o, e = run([W, argv[0], '--certificate=' + cert] + argv[1:])
+        if rc != 0 or json.load(open(cert)) != json.loads(text):
+            raise Failure('%s --certificate: exit %s, or another certificate'
+                          ' than the request\'s' % (' '.join(argv), rc))
     verdicts = set()
     for name, text in out['strong-stability']:
         d = json.loads(text)
@@ -449,6 +495,8 @@ def claim_holds(W, kind, doc, tmp):
 # The run.
 
 def verify(W, path):
+    """`wrenchcone verify PATH`: its status, after checking that it
+    printed what wrenchcone(1) says for that status."""
     rc, o, e = run([W, 'verify'], path)
     o, e = o.decode(errors='replace'), e.decode(errors='replace')
     good = {0: o.startswith('certificate holds: ') and not e,
@@ -464,7 +512,24 @@ def verify(W, path):
     return rc
 
 
-def tamper_kind(W, kind, certs, tmp, rng, budget, stats):
+def answer_status(a):
+    """The status `wrenchcone verify` exits with, from its batch answer."""
+    if a.get('holds') is True:
+        return 0
+    if a.get('holds') is False:
+        return 4
+    err = a.get('error', {})
+    if err.get('status') == 1 and err.get('line') is not None:
+        return 1
+    raise Failure('verify answered %s' % json.dumps(a))
+
+
+# Changes of each kind that also go through `wrenchcone verify`.
+CLI_SAMPLE = 4
+
+
+def tamper_kind(kind, certs, rng, budget):
+    """The changed certificates: [(what, doc, cls, op)]."""
     units = {}
     parsed = [json.loads(t) for n, t in certs]
     for c, d in enumerate(parsed):
@@ -476,10 +541,10 @@ def tamper_kind(W, kind, certs, tmp, rng, budget, stats):
     rng.shuffle(keys)
     # a class that must be caught gets two turns in each round
     order = keys + [k for k in keys if must_rule(kind, *k)]
-    path = os.path.join(tmp, 'tampered.json')
-    tried = misses = 0
-    while tried < budget and misses < 1000:
-        cls, op = order[(tried + misses) % len(order)]
+    changed = []
+    misses = 0
+    while len(changed) < budget and misses < 1000:
+        cls, op = order[(len(changed) + misses) % len(order)]
         c, p = rng.choice(units[(cls, op)])
         doc = json.loads(certs[c][1])
         what = mutate(doc, p, op, rng)
@@ -487,12 +552,27 @@ def tamper_kind(W, kind, certs, tmp, rng, budget, stats):
             misses += 1
             continue
         what = '%s certificate of %s: %s' % (kind, certs[c][0], what)
-        open(path, 'w').write(json.dumps(doc))
+        changed.append((what, doc, cls, op))
+    return changed
+
+
+def judge(W, kind, changed, tmp, stats):
+    """Verify every changed certificate (one batch; the first few also
+    by the command line) and judge the survivors."""
+    paths = []
+    for i, (what, doc, cls, op) in enumerate(changed):
+        paths.append(os.path.join(tmp, 'tampered-%d.json' % i))
+        open(paths[-1], 'w').write(json.dumps(doc))
+    answers = batch(W, [{'command': 'verify', 'certfile': x}
+                        for x in paths], tmp)
+    for i, ((what, doc, cls, op), a) in enumerate(zip(changed, answers)):
         try:
-            rc = verify(W, path)
+            rc = answer_status(a)
+            if i < CLI_SAMPLE and verify(W, paths[i]) != rc:
+                raise Failure('verify exits otherwise than its batch '
+                              'answer %s' % json.dumps(a))
         except Failure as x:
             raise Failure('%s\n  %s' % (what, x))
-        tried += 1
         row = stats.setdefault((kind, cls), {0: 0, 1: 0, 4: 0,
                                              'survivors': []})
         row[rc] += 1
@@ -507,7 +587,6 @@ def tamper_kind(W, kind, certs, tmp, rng, budget, stats):
             verdict = 'harmless: the program agrees with the changed claim' \
                 if holds is True else 'FAIL: %s' % holds
         row['survivors'].append((what, verdict))
-    return tried
 
 
 def report(stats, kinds, elapsed):
@@ -548,8 +627,8 @@ def main():
     try:
         certs = gen_certs(W, data, tmp, rng)
         for kind in certs:
-            tamper_kind(W, kind, certs[kind], tmp, rng, BUDGET[kind] * mult,
-                        stats)
+            judge(W, kind, tamper_kind(kind, certs[kind], rng,
+                                       BUDGET[kind] * mult), tmp, stats)
     except Failure as x:
         print('FAIL: %s' % x)
         print('replay with: WC_TEST_SEED=%d WC_TEST_MULTIPLIER=%d'
