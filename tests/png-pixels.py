@@ -13,7 +13,10 @@ png-pixels.py --nonblank N IMAGE.png: at least N dark pixels (a
 screenshot that shows something)."""
 import re, struct, sys, zlib
 
-def read_png(path):
+def read_png(path, width=None, height=None):
+    """(w, h, bpp, rows): the image's size and its rows of bytes.  Only
+    the top-left width x height pixels are decoded (a pixel depends on
+    those above and left of it only), the rest of each row left as zeros."""
     data = open(path, 'rb').read()
     assert data[:8] == b'\x89PNG\r\n\x1a\n', 'not a PNG'
     pos, idat, w = 8, b'', None
@@ -28,20 +31,26 @@ def read_png(path):
             idat += body
         pos += 12 + n
     raw, stride = zlib.decompress(idat), w * bpp
-    rows, prev = [], bytearray(stride)
-    for y in range(h):
-        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a = line[i - bpp] if i >= bpp else 0
-            b, c = prev[i], prev[i - bpp] if i >= bpp else 0
-            if f == 1: line[i] = (line[i] + a) & 255
-            elif f == 2: line[i] = (line[i] + b) & 255
-            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(line)
+    n = min(w, width if width is not None else w) * bpp
+    rows, prev = [], bytearray(n)
+    low7, high = int.from_bytes(b'\x7f' * n, 'big'), int.from_bytes(b'\x80' * n, 'big')
+    for y in range(min(h, height if height is not None else h)):
+        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:y * (stride + 1) + 1 + n])
+        if f == 2:
+            # every byte plus the one above it, mod 256, in one big-integer sum
+            a, b = int.from_bytes(line, 'big'), int.from_bytes(prev, 'big')
+            line = bytearray((((a & low7) + (b & low7)) ^ ((a ^ b) & high)).to_bytes(n, 'big'))
+        elif f != 0:
+            for i in range(n):
+                a = line[i - bpp] if i >= bpp else 0
+                b, c = prev[i], prev[i - bpp] if i >= bpp else 0
+                if f == 1: line[i] = (line[i] + a) & 255
+                elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
+                elif f == 4:
+                    p = a + b - c
+                    pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                    line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append(line + bytearray(stride - n))
         prev = line
     return w, h, bpp, rows
 
@@ -58,14 +67,18 @@ if sys.argv[1] == '--nonblank':
         print('%s: %d dark pixels, want at least %s' % (sys.argv[3], dark, sys.argv[2]))
         sys.exit(1)
     sys.exit(0)
-w, h, bpp, rows = read_png(sys.argv[1])
 svg = open(sys.argv[2]).read()
 m = re.search(r'<g class="plane" data-x0="([-0-9.]+)" data-y0="([-0-9.]+)" data-scale="([-0-9.]+)"', svg)
 x0, y0, s = map(float, m.groups())
-bad = 0
+checks = []
 for check in sys.argv[3:]:
     x, y, dx, dy, want = check.split(',')
-    px, py = round(x0 + s * float(x) + float(dx)), round(y0 - s * float(y) + float(dy))
+    checks.append((x, y, want, round(x0 + s * float(x) + float(dx)),
+                   round(y0 - s * float(y) + float(dy))))
+w, h, bpp, rows = read_png(sys.argv[1], max(c[3] for c in checks) + 2,
+                           max(c[4] for c in checks) + 2)
+bad = 0
+for x, y, want, px, py in checks:
     darkest = min(lum(rows, bpp, i, j) for i in range(px - 1, px + 2)
                   for j in range(py - 1, py + 2) if 0 <= i < w and 0 <= j < h)
     if (darkest < 90) != (want == 'dark'):
