@@ -17,19 +17,42 @@ need xmllint rsvg-convert python3
 W=$WRENCHCONE
 cd "$top_srcdir" || exit 99
 
-# Every problem, every kind (the mode: the problem's first feasible one).
+# Every problem, every kind (the mode: the problem's first feasible one):
+# drawn by one batch of draw requests (whose "svg" is what -o writes:
+# tests/schema.sh), checked by one xmllint and rendered by one
+# rsvg-convert; a few processes instead of a hundred.
+: > "$tmp/draws"
 for f in data/*.wc; do
     mode=$("$W" modes "$f" | head -n 1)
     for kind in --modes --stability --plan --sweep=0,1/5,1 --graph \
                 "--mode=$mode"; do
-        "$W" draw "$kind" "$f" -o "$tmp/f.svg" 2>"$tmp/err"
-        rc=$?
-        [ $rc -eq 0 ] || { fail "draw $kind $f: exit $rc: $(cat "$tmp/err")"; continue; }
-        xmllint --noout "$tmp/f.svg" 2>"$tmp/err" || fail "draw $kind $f: $(cat "$tmp/err")"
-        rsvg-convert "$tmp/f.svg" -o "$tmp/f.png" 2>"$tmp/err" \
-            || fail "draw $kind $f does not render: $(cat "$tmp/err")"
+        "$W" draw "$kind" "$f" --print-request >> "$tmp/draws" \
+            || fail "draw $kind $f --print-request"
     done
 done
+"$W" batch "$tmp/draws" > "$tmp/answers" 2> "$tmp/err" \
+    || fail "batch of draw requests: exit $?: $(cat "$tmp/err")"
+python3 -c '
+import json, sys
+tmp = sys.argv[1]
+requests = open(tmp + "/draws").read().splitlines()
+answers = open(tmp + "/answers").read().splitlines()
+if len(answers) != len(requests):
+    sys.exit("%d answers to %d draw requests" % (len(answers), len(requests)))
+for i, (q, a) in enumerate(zip(requests, answers)):
+    a = json.loads(a)
+    if "svg" not in a:
+        print("FAIL: %s answers %s" % (q, json.dumps(a)))
+        continue
+    open("%s/figure-%02d.svg" % (tmp, i), "w").write(a["svg"])
+    print(q, file=open("%s/figure-%02d.request" % (tmp, i), "w"))
+' "$tmp" > "$tmp/err" 2>&1 || fail "draw answers: $(cat "$tmp/err")"
+grep -q FAIL "$tmp/err" && fail "$(cat "$tmp/err")"
+set -- "$tmp"/figure-*.svg
+[ $# -eq 36 ] || fail "$# figures drawn, want 36"
+xmllint --noout "$@" 2> "$tmp/err" || fail "figures not well-formed: $(cat "$tmp/err")"
+rsvg-convert -f pdf -o "$tmp/figures.pdf" "$@" 2> "$tmp/err" \
+    || fail "figures that do not render: $(cat "$tmp/err")"
 
 # The paper's examples (the issue's command lines), byte for byte.
 golden() {
