@@ -91,11 +91,14 @@ for p in data/*.wc data/corpus/*.wc; do
     last=$(printf '%s\n' $modes | tail -n 1)
     req "{\"command\": \"modes\", \"problem\": $P}" modes "$p"
     req "{\"command\": \"modes\", \"problem\": $P, \"witness\": true}" modes --witness "$p"
-    # Every mode on data/, the first and last on the corpus (whose every
-    # cone corpus.sh checks), to keep the test to seconds.
+    # Every mode's cone on data/, the first and last on the corpus (whose
+    # every cone corpus.sh checks), and feasible on the first and last
+    # (t-request and python.sh compare more), to keep the test to seconds.
     case $p in data/corpus/*) some="$first $last" ;; *) some=$modes ;; esac
     for m in $some; do
         req "{\"command\": \"cone\", \"problem\": $P, \"mode\": \"$m\"}" cone "$p" "$m"
+    done
+    for m in $first $last; do
         req "{\"command\": \"feasible\", \"problem\": $P, \"mode\": \"$m\"}" feasible "$p" "$m"
     done
     req "{\"command\": \"cone\", \"problem\": $P, \"mode\": \"$first\", \"method\": \"paper\", \"trace\": true}" \
