@@ -4,7 +4,8 @@
    and a digit string, not the library's rounding formula), on hand
    cases (halves, negatives that round to zero, K = 0 and the maximum)
    and on seeded random rationals, large and small, for every K; then
-   wc_fprint_fmpq_text and wc_fprint_qvec with decimals on and off.  */
+   wc_fprint_fmpq_text and wc_fprint_qvec with decimals on and off, as
+   their options (wc_print_opts) say.  */
 
 #include <config.h>
 
@@ -200,8 +201,14 @@ static void
 test_text(void)
 {
     fmpq v[3];
-    char * got = NULL;
+    char * got = NULL, * want = NULL;
     size_t len = 0;
+    wc_print_opts two = { WC_FORMAT_TEXT, 1, 2, NULL };
+    wc_print_opts json = { WC_FORMAT_JSON, 1, 2, NULL };
+    wc_print_opts zero = { WC_FORMAT_TEXT, 0, 0, NULL };
+    wc_print_opts off = { WC_FORMAT_TEXT, 0, 5, NULL };
+    wc_print_opts over = { WC_FORMAT_TEXT, 1, WC_DECIMALS_MAX + 7, NULL };
+    wc_print_opts max = { WC_FORMAT_TEXT, 1, WC_DECIMALS_MAX, NULL };
     int j;
 
     for (j = 0; j < 3; j++)
@@ -209,34 +216,37 @@ test_text(void)
     fmpq_set_si(v + 0, -1, 3);
     fmpq_set_si(v + 1, 1, 1);
     fmpq_set_si(v + 2, 5, 8);
-    if (wc_print_decimals() >= 0)
-        wctest_fail("decimals are on by default");
-    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, 0));
-    expect_text("off", got, "(-1/3, 1, 5/8)");
+    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, NULL));
+    expect_text("no options", got, "(-1/3, 1, 5/8)");
     free(got);
-    wc_print_set_decimals(2);
-    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, 0));
+    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, &zero));
+    expect_text("zeroed options", got, "(-1/3, 1, 5/8)");
+    free(got);
+    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, &two));
     expect_text("vector", got,
                 "(-1/3, 1, 5/8) (approx. (-0.33, 1.00, 0.63))");
     free(got);
-    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, 1));
+    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, &json));
     expect_text("JSON", got, "[\"-1/3\", \"1\", \"5/8\"]");
     free(got);
-    CAPTURE(got, len, wc_fprint_qvec(f_, v + 1, 1, 0));
+    CAPTURE(got, len, wc_fprint_qvec(f_, v + 1, 1, &two));
     expect_text("integers", got, "(1)");
     free(got);
-    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0));
+    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0, &two));
     expect_text("scalar", got, "-1/3 (approx. -0.33)");
     free(got);
-    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 1));
+    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 1, &two));
     expect_text("integer", got, "1");
     free(got);
-    wc_print_set_decimals(WC_DECIMALS_MAX + 7);
-    if (wc_print_decimals() != WC_DECIMALS_MAX)
-        wctest_fail("decimals above the maximum: %d", wc_print_decimals());
-    wc_print_set_decimals(-1);
-    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0));
-    expect_text("off again", got, "-1/3");
+    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0, &off));
+    expect_text("approx unset", got, "-1/3");
+    free(got);
+    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0, &over));
+    CAPTURE(want, len, wc_fprint_fmpq_text(f_, v + 0, &max));
+    expect_text("decimals above the maximum", got, want);
+    if (strlen(want) != strlen("-1/3 (approx. -0.)") + WC_DECIMALS_MAX)
+        wctest_fail("%d decimals: '%s'", WC_DECIMALS_MAX, want);
+    free(want);
     free(got);
     for (j = 0; j < 3; j++)
         fmpq_clear(v + j);
