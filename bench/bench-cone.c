@@ -32,6 +32,9 @@
 #include "analysis/direct3.h"
 #include "old-hull3.h"
 
+/* The options of JSON output (io/print.h).  */
+static const wc_print_opts as_json[1] = { { WC_FORMAT_JSON, 0, 0, NULL } };
+
 /* Mean seconds per cone.  */
 static double
 time_cone(const wc_problem_t P, const char * mode, wc_method method,
@@ -205,7 +208,7 @@ time_direct(const wc_problem_t P, const char * mode, int general,
     /* The answer as JSON, to check that both give the same cone.  */
     if ((f = fmemopen(json, jlen, "w")) == NULL)
         exit(3);
-    wc_cone_fprint_json(f, W);
+    wc_cone_fprint(f, W, as_json);
     fclose(f);
     json[jlen - 1] = '\0';
     wc_cone_clear(W);

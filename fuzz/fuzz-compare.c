@@ -129,9 +129,12 @@ LLVMFuzzerTestOneInput(const uint8_t * data, size_t size)
         check_rep(R->reps + i, closure[k]);
     for (json = 0; json <= 1; json++)
     {
+        wc_print_opts po = { WC_FORMAT_TEXT, 0, 0, NULL };
+
+        po.format = json ? WC_FORMAT_JSON : WC_FORMAT_TEXT;
         fuzz_out_open(&o);
         FUZZ_REQUIRE(wc_comparison_fprint(o.f, R, W[k], "section4.wc",
-                                          modes[k], FILE_NAME, json) == WC_OK,
+                                          modes[k], FILE_NAME, &po) == WC_OK,
                      "printing the report failed");
         fuzz_out_close(&o);
         FUZZ_REQUIRE(o.len > 0, "an empty report");

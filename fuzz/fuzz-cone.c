@@ -22,6 +22,9 @@
 
 #include "fuzzutil.h"
 
+/* The options of JSON output (io/print.h).  */
+static const wc_print_opts as_json[1] = { { WC_FORMAT_JSON, 0, 0, NULL } };
+
 #define MAX_FIXELS 4
 
 typedef struct
@@ -88,9 +91,11 @@ decode(wc_problem_t P, char * cone_mode, char * kin_mode, reader * r)
 static void
 print_cone(fuzz_out * o, const wc_cone_t W, int json)
 {
+    wc_print_opts po = { WC_FORMAT_TEXT, 0, 0, "  " };
+
+    po.format = json ? WC_FORMAT_JSON : WC_FORMAT_TEXT;
     fuzz_out_open(o);
-    FUZZ_REQUIRE((json ? wc_cone_fprint_json(o->f, W)
-                  : wc_cone_fprint_text(o->f, W, "  ")) == WC_OK,
+    FUZZ_REQUIRE(wc_cone_fprint(o->f, W, &po) == WC_OK,
                  "printing a cone failed");
     fuzz_out_close(o);
 }
@@ -146,7 +151,7 @@ check_certificate(const wc_problem_t P, const char * mode)
                  err->message ? err->message : "");
     claim = C->feasible;
     fuzz_out_open(&o);
-    FUZZ_REQUIRE(wc_certificate_fprint(o.f, C, P, 1) == WC_OK,
+    FUZZ_REQUIRE(wc_certificate_fprint(o.f, C, P, as_json) == WC_OK,
                  "printing a certificate failed");
     fuzz_out_close(&o);
     s = wc_verify_certificate(&holds, &reason, &claimed, &feasible, o.buf,

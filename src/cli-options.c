@@ -42,18 +42,19 @@ static const struct option everyones[] = {
     { NULL, 0, NULL, 0 }
 };
 
-/* --decimals=K: 0 <= K <= WC_DECIMALS_MAX, digits only.  */
+/* --decimals=K: 0 <= K <= WC_DECIMALS_MAX, digits only, into
+   p->decimals.  */
 static int
-set_decimals(const char * s)
+set_decimals(cli_options * p, const char * s)
 {
     int k = 0;
-    const char * p;
+    const char * c;
 
-    for (p = s; *p >= '0' && *p <= '9' && k <= WC_DECIMALS_MAX; p++)
-        k = 10 * k + (*p - '0');
-    if (p == s || *p != '\0' || k > WC_DECIMALS_MAX)
+    for (c = s; *c >= '0' && *c <= '9' && k <= WC_DECIMALS_MAX; c++)
+        k = 10 * k + (*c - '0');
+    if (c == s || *c != '\0' || k > WC_DECIMALS_MAX)
         return 0;
-    wc_print_set_decimals(k);
+    p->decimals = k;
     return 1;
 }
 
@@ -119,6 +120,7 @@ cli_options_init(cli_options * p, const cli_command * cmd)
     p->cmd = cmd;
     p->status = WC_OK;
     p->print_request = 0;
+    p->decimals = -1;
     ok = append_rows(p->table, &n, cmd->schema, 0)
         && append(p->table, &n, everyones);
     for (c = cli_commands; ok && c->schema != NULL; c++)
@@ -150,7 +152,7 @@ cli_option(cli_options * p, int argc, char ** argv)
             cli_progress_force();
         else if (c == CLI_PRINT_REQUEST)
             p->print_request = 1;
-        else if (!set_decimals(optarg))
+        else if (!set_decimals(p, optarg))
         {
             p->status = cli_usage_error(p->cmd->schema->name, "--decimals wants a "
                                         "whole number from 0 to 50, not "
@@ -441,6 +443,7 @@ cli_parse(_wc_request * R, const cli_command * self, int argc, char ** argv)
             return cli_usage_error(S->name, "%s", why);
     if (c == CLI_EXIT)
         return p.status;
+    R->decimals = p.decimals;
     if ((status = operands(R, S, argv + optind, argc - optind)) >= 0)
         return status;
     stdin_inputs(R, S);

@@ -127,6 +127,7 @@ typedef struct
     struct option table[CLI_MAX_OPTIONS + 1];
     int status;         /* the exit status, once CLI_EXIT is returned */
     int print_request;  /* --print-request was given */
+    int decimals;       /* --decimals=K, or -1 */
 }
 cli_options;
 

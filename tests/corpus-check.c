@@ -29,6 +29,9 @@
 
 #include "wrenchcone.h"
 
+/* The options of JSON output (io/print.h).  */
+static const wc_print_opts as_json[1] = { { WC_FORMAT_JSON, 0, 0, NULL } };
+
 #define ME "corpus-check"
 
 /* The whole of path into a malloc'd, NUL-terminated buffer.  */
@@ -132,7 +135,7 @@ cone_line(const wc_problem_t P, const char * mode, wc_method method)
         fputs(WC_JSON_OPEN "\"mode\": ", f);
         wc_fprint_json_string(f, mode);
         fputs(", \"cone\": ", f);
-        wc_cone_fprint_json(f, W);
+        wc_cone_fprint(f, W, as_json);
         fputs("}\n", f);
         if (fclose(f) != 0)
         {

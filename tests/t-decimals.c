@@ -4,10 +4,15 @@
    and a digit string, not the library's rounding formula), on hand
    cases (halves, negatives that round to zero, K = 0 and the maximum)
    and on seeded random rationals, large and small, for every K; then
-   wc_fprint_fmpq_text and wc_fprint_qvec with decimals on and off.  */
+   wc_fprint_fmpq_text and wc_fprint_qvec with decimals on and off, as
+   their options (wc_print_opts) say; then three threads printing one
+   stability answer at once, to 2 decimals, to 7 and without, each
+   getting its own bytes every time (the setting is an argument, held by
+   no thread).  */
 
 #include <config.h>
 
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -200,8 +205,14 @@ static void
 test_text(void)
 {
     fmpq v[3];
-    char * got = NULL;
+    char * got = NULL, * want = NULL;
     size_t len = 0;
+    wc_print_opts two = { WC_FORMAT_TEXT, 1, 2, NULL };
+    wc_print_opts json = { WC_FORMAT_JSON, 1, 2, NULL };
+    wc_print_opts zero = { WC_FORMAT_TEXT, 0, 0, NULL };
+    wc_print_opts off = { WC_FORMAT_TEXT, 0, 5, NULL };
+    wc_print_opts over = { WC_FORMAT_TEXT, 1, WC_DECIMALS_MAX + 7, NULL };
+    wc_print_opts max = { WC_FORMAT_TEXT, 1, WC_DECIMALS_MAX, NULL };
     int j;
 
     for (j = 0; j < 3; j++)
@@ -209,37 +220,163 @@ test_text(void)
     fmpq_set_si(v + 0, -1, 3);
     fmpq_set_si(v + 1, 1, 1);
     fmpq_set_si(v + 2, 5, 8);
-    if (wc_print_decimals() >= 0)
-        wctest_fail("decimals are on by default");
-    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, 0));
-    expect_text("off", got, "(-1/3, 1, 5/8)");
+    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, NULL));
+    expect_text("no options", got, "(-1/3, 1, 5/8)");
     free(got);
-    wc_print_set_decimals(2);
-    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, 0));
+    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, &zero));
+    expect_text("zeroed options", got, "(-1/3, 1, 5/8)");
+    free(got);
+    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, &two));
     expect_text("vector", got,
                 "(-1/3, 1, 5/8) (approx. (-0.33, 1.00, 0.63))");
     free(got);
-    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, 1));
+    CAPTURE(got, len, wc_fprint_qvec(f_, v, 3, &json));
     expect_text("JSON", got, "[\"-1/3\", \"1\", \"5/8\"]");
     free(got);
-    CAPTURE(got, len, wc_fprint_qvec(f_, v + 1, 1, 0));
+    CAPTURE(got, len, wc_fprint_qvec(f_, v + 1, 1, &two));
     expect_text("integers", got, "(1)");
     free(got);
-    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0));
+    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0, &two));
     expect_text("scalar", got, "-1/3 (approx. -0.33)");
     free(got);
-    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 1));
+    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 1, &two));
     expect_text("integer", got, "1");
     free(got);
-    wc_print_set_decimals(WC_DECIMALS_MAX + 7);
-    if (wc_print_decimals() != WC_DECIMALS_MAX)
-        wctest_fail("decimals above the maximum: %d", wc_print_decimals());
-    wc_print_set_decimals(-1);
-    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0));
-    expect_text("off again", got, "-1/3");
+    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0, &off));
+    expect_text("approx unset", got, "-1/3");
+    free(got);
+    CAPTURE(got, len, wc_fprint_fmpq_text(f_, v + 0, &over));
+    CAPTURE(want, len, wc_fprint_fmpq_text(f_, v + 0, &max));
+    expect_text("decimals above the maximum", got, want);
+    if (strlen(want) != strlen("-1/3 (approx. -0.)") + WC_DECIMALS_MAX)
+        wctest_fail("%d decimals: '%s'", WC_DECIMALS_MAX, want);
+    free(want);
     free(got);
     for (j = 0; j < 3; j++)
         fmpq_clear(v + j);
+}
+
+/* ------------------------------------------------------------------ */
+/* Threads printing one answer with decimals of their own              */
+
+/* Paper Figure 10's square with its three fixels touching: pushing
+   regions whose ends are rationals (tests/cli-text.sh).  */
+static const char touch[] =
+    "friction 1/5\nshape polygon 0 0 4 0 4 3 0 3\ncom 2 3/2\nmass 1\n"
+    "inertia 25/12\nfixel 1 0 touching\nfixel 3 0 touching\n"
+    "fixel 0 2 touching\n";
+
+#define NPRINTERS 3
+#define REPEAT 200
+
+typedef struct
+{
+    const wc_stability_struct * S;
+    const wc_problem_struct * P;
+    wc_print_opts o;
+    const char * want;          /* its bytes, printed alone */
+    long bad;                   /* the prints that differ from want */
+}
+printer;
+
+static char *
+stability_text(const wc_stability_t S, const wc_problem_t P,
+               const wc_print_opts * o)
+{
+    char * buf = NULL;
+    size_t len = 0;
+
+    CAPTURE(buf, len, if (wc_stability_fprint(f_, S, P, o) != WC_OK)
+                wctest_fail("wc_stability_fprint failed"));
+    return buf;
+}
+
+static void *
+print_many(void * arg)
+{
+    printer * p = arg;
+    int i;
+
+    for (i = 0; i < REPEAT; i++)
+    {
+        char * buf = NULL;
+        size_t len = 0;
+        FILE * f = open_memstream(&buf, &len);
+
+        if (f == NULL || wc_stability_fprint(f, p->S, p->P, &p->o) != WC_OK
+            || fclose(f) != 0 || strcmp(buf, p->want) != 0)
+            p->bad++;
+        free(buf);
+    }
+    flint_cleanup();            /* this thread's FLINT caches */
+    return NULL;
+}
+
+/* A line of text, exactly.  */
+static void
+expect_line(const char * what, const char * text, const char * line)
+{
+    const char * s = text;
+    size_t n = strlen(line);
+
+    while (s != NULL && !(strncmp(s, line, n) == 0 && s[n] == '\n'))
+        if ((s = strchr(s, '\n')) != NULL)
+            s++;
+    if (s == NULL)
+        wctest_fail("%s: no line '%s' in:\n%s", what, line, text);
+}
+
+static void
+test_threads(void)
+{
+    static const char * const edge1[NPRINTERS] = {
+        "    edge 1: s in [35/78 (approx. 0.45), 2/3 (approx. 0.67)], "
+        "(x, y) from (4, 35/26) (approx. (4.00, 1.35)) to (4, 2)",
+        "    edge 1: s in [35/78 (approx. 0.4487179), 2/3 (approx. "
+        "0.6666667)], (x, y) from (4, 35/26) (approx. (4.0000000, "
+        "1.3461538)) to (4, 2)",
+        "    edge 1: s in [35/78, 2/3], (x, y) from (4, 35/26) to (4, 2)"
+    };
+    wc_problem_t P;
+    wc_stability_t S;
+    wc_error_t err;
+    printer p[NPRINTERS];
+    pthread_t t[NPRINTERS];
+    int i;
+
+    wc_problem_init(P);
+    wc_stability_init(S);
+    wc_error_init(err);
+    if (wc_problem_parse(P, touch, strlen(touch), "touch", err) != WC_OK
+        || wc_stability(S, P, err) != WC_OK)
+        wctest_fail("stability of the touching square: %s", err->message);
+    for (i = 0; i < NPRINTERS; i++)
+    {
+        wc_print_opts o = { WC_FORMAT_TEXT, i < 2, i == 0 ? 2 : 7, NULL };
+
+        p[i].S = S;
+        p[i].P = P;
+        p[i].o = o;
+        p[i].want = stability_text(S, P, &o);
+        p[i].bad = 0;
+        expect_line("alone", p[i].want, edge1[i]);
+    }
+    for (i = 0; i < NPRINTERS; i++)
+        if (pthread_create(t + i, NULL, print_many, p + i) != 0)
+            wctest_fail("pthread_create failed");
+    for (i = 0; i < NPRINTERS; i++)
+        pthread_join(t[i], NULL);
+    for (i = 0; i < NPRINTERS; i++)
+    {
+        if (p[i].bad != 0)
+            wctest_fail("printer %d (approx %d, %d decimals): %ld of %d "
+                        "prints differ from its own bytes", i, p[i].o.approx,
+                        p[i].o.decimals, p[i].bad, REPEAT);
+        free((char *) p[i].want);
+    }
+    wc_error_clear(err);
+    wc_stability_clear(S);
+    wc_problem_clear(P);
 }
 
 int
@@ -249,6 +386,7 @@ main(void)
     test_hand();
     test_random();
     test_text();
+    test_threads();
     flint_cleanup_master();
     return 0;
 }

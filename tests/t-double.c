@@ -86,10 +86,12 @@ print_to_string(const wc_fcone_t C, int format)
     char * buf = NULL;
     size_t len = 0;
     FILE * f = open_memstream(&buf, &len);
+    wc_print_opts o = { WC_FORMAT_TEXT, 0, 0, NULL };
 
+    o.format = (wc_format) format;
     if (f == NULL)
         wctest_fail("open_memstream failed");
-    if (wc_fcone_fprint(f, C, format) != WC_OK)
+    if (wc_fcone_fprint(f, C, &o) != WC_OK)
         wctest_fail("wc_fcone_fprint(format %d) failed", format);
     fclose(f);
     return buf;
@@ -144,10 +146,12 @@ compare_mode(const wc_problem_t P, const char * mode, double tol,
         bits = wc_fcone_compare_exact(F, X, tol);
     if (fail_on_diff && bits != 0)
     {
+        wc_print_opts text = { WC_FORMAT_TEXT, 0, 0, "  " };
+
         fprintf(stderr, "double cone:\n");
-        wc_fcone_fprint(stderr, F, WC_FCONE_TEXT);
+        wc_fcone_fprint(stderr, F, NULL);
         fprintf(stderr, "exact cone:\n");
-        wc_cone_fprint_text(stderr, X, "  ");
+        wc_cone_fprint(stderr, X, &text);
         wctest_fail_problem(P, mode, "double and exact cones differ in:%s",
                             diff_str(bits));
     }
@@ -218,7 +222,7 @@ check_section4(void)
         wctest_fail("Section 4, na: differs from the exact cone in:%s",
                     diff_str((int) k));
 
-    s = print_to_string(F, WC_FCONE_JSON);
+    s = print_to_string(F, WC_FORMAT_JSON);
     if (strncmp(s, "{\"empty\": false, \"arith\": \"double\", \"eps\": ", 43) != 0)
         wctest_fail("Section 4 JSON starts wrongly: %s", s);
     expect_substring(s, "\"dim\": 3, \"lineality_dim\": 0, \"closed\": false, "
@@ -230,30 +234,30 @@ check_section4(void)
     if (s[strlen(s) - 1] != '}')
         wctest_fail("JSON ends with a newline or junk: %s", s);
     free(s);
-    s = print_to_string(F, WC_FCONE_CDD);
+    s = print_to_string(F, WC_FORMAT_CDD);
     expect_substring(s, "* floating point, not exact", "cdd");
     expect_substring(s, "*   strict facet, H row 1\n*   excluded ray, V row 2\n"
                      "*   excluded ray, V row 3\nH-representation\nbegin\n"
                      " 3 4 real\n 0 0.70710678118654", "cdd");
     expect_substring(s, "V-representation\nbegin\n 4 4 real\n 1 0 0 0\n", "cdd");
     free(s);
-    s = print_to_string(F, WC_FCONE_TEXT);
+    s = print_to_string(F, WC_FORMAT_TEXT);
     expect_substring(s, "floating point, not exact", "text");
     expect_substring(s, "not closed (1 of 3 facets strict)", "text");
     free(s);
 
     /* An empty cone prints as such in every format.  */
     wc_fcone_set_empty(F);
-    s = print_to_string(F, WC_FCONE_JSON);
+    s = print_to_string(F, WC_FORMAT_JSON);
     if (strcmp(s, "{\"empty\": true, \"arith\": \"double\", "
                "\"eps\": 1.0000000000000001e-09}") != 0)
         wctest_fail("empty JSON: %s", s);
     free(s);
-    s = print_to_string(F, WC_FCONE_INE);
+    s = print_to_string(F, WC_FORMAT_INE);
     expect_substring(s, "* the cone is empty\nH-representation\nbegin\n 1 4 real\n"
                      " -1 0 0 0\nend\n", "empty .ine");
     free(s);
-    s = print_to_string(F, WC_FCONE_EXT);
+    s = print_to_string(F, WC_FORMAT_EXT);
     expect_substring(s, "V-representation\nbegin\n 0 4 real\nend\n", "empty .ext");
     free(s);
 

@@ -36,6 +36,9 @@
 #include "io/print.h"
 #include "testutil.h"
 
+/* The options of JSON output (io/print.h).  */
+static const wc_print_opts as_json[1] = { { WC_FORMAT_JSON, 0, 0, NULL } };
+
 static char *
 print_to_string(int (*put)(FILE *, const void *), const void * data,
                 size_t * len)
@@ -90,13 +93,14 @@ put_cert(FILE * f, const void * p)
 static int
 put_goal(FILE * f, const void * p)
 {
-    return wc_set_fprint_json(f, ((const wc_plan_struct *) p)->goal);
+    return wc_set_fprint(f, ((const wc_plan_struct *) p)->goal, as_json);
 }
 
 static int
 put_strong(FILE * f, const void * p)
 {
-    return wc_set_fprint_json(f, ((const wc_stability_struct *) p)->strong);
+    return wc_set_fprint(f, ((const wc_stability_struct *) p)->strong,
+                         as_json);
 }
 
 static int
@@ -106,7 +110,7 @@ put_weak_as_set(FILE * f, const void * p)
 
     fprintf(f, "{\"empty\": false, \"interior\": %s, \"pieces\": [",
             S->weak->dim == 3 ? "true" : "false");
-    wc_cone_fprint_json(f, S->weak);
+    wc_cone_fprint(f, S->weak, as_json);
     fputs("]}", f);
     return WC_OK;
 }

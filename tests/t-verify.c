@@ -25,6 +25,9 @@
 #include "check/verify.h"
 #include "testutil.h"
 
+/* The options of JSON output (io/print.h).  */
+static const wc_print_opts as_json[1] = { { WC_FORMAT_JSON, 0, 0, NULL } };
+
 #define fail(line, ...) wctest_report("t-verify.c", line, __VA_ARGS__)
 #define FAIL(...) fail(__LINE__, __VA_ARGS__)
 
@@ -2317,7 +2320,7 @@ certificate_text(size_t * len, const wc_certificate_t C, const wc_problem_t P)
 {
     FILE * f = cert_file();
 
-    return cert_read_back(f, wc_certificate_fprint(f, C, P, 1), len);
+    return cert_read_back(f, wc_certificate_fprint(f, C, P, as_json), len);
 }
 
 static void

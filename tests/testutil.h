@@ -111,7 +111,7 @@ void wctest_random_mode_kinematic(char * mode, const wc_problem_t P);
    be read or parsed.  */
 void wctest_load_data(wc_problem_t P, const char * name);
 
-/* W as wc_cone_fprint_json writes it: a string to free with free();
+/* W as wc_cone_fprint writes it in JSON: a string to free with free();
    fails the test when it cannot be written.  */
 char * wctest_cone_json(const wc_cone_t W);
 

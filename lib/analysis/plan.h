@@ -58,8 +58,6 @@
 #ifndef WC_PLAN_H
 #define WC_PLAN_H
 
-#include <stdio.h>
-
 #include <flint/fmpq.h>
 
 #include "core/error.h"
@@ -235,41 +233,8 @@ int wc_plan_critical(wc_critical_t C, const wc_problem_t P,
 int wc_critical_width_ok(const fmpq_t width);
 int wc_critical_max_ok(const fmpq_t max);
 
-/* Printing (planprint.c).  JSON as wrenchcone(1), JSON with extra keys: "fixels",
-   "states" (each state's strings, Table 5), "redundant" (each
-   syntactically redundant string with one containing it),
-   "goal_in_strong_paper", "goal_not_strong" and "goal_not_strong_paper"
-   (witnesses), "complete" ({"accepted": SET, "outside_goal": wrench or
-   null, "push": REGIONS}).  Text is for people.  P gives the shape for
-   the (approximate, marked so) lengths of pushing regions.  */
-int wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
-                   int json);
-
-/* {"wrench", "in_goal", "holding", "complete": {"accepted", "verdict",
-   "transitions": [{"from", "to", "via"}], "states"}} or text.  */
-int wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json);
-
-/* Write the certificate that R->goal is exactly G_goal for P (kind
-   "plan-goal", wrenchcone-certificate(5)): the goal pieces' faces proved
-   to miss every needed string's cone, those cones proved to hold their
-   generators, every cell of R's arrangement placed.  R must be wc_plan's
-   result for P.  Returns WC_OK; WC_EINPUT, nothing written, for more than
-   WC_PLAN_CERT_MAX_FIXELS fixels; or WC_EINTERNAL (err set) when a proof
-   fails (a bug) or on a write error (plancertprint.c).  */
-int wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
-                               const wc_plan_t R, wc_error_t err);
-
-/* Write the certificate of the critical bracket C of P (kind
-   "critical-friction", wrenchcone-certificate(5)): the witness at lo in
-   G_goal with multipliers for every string, and a plan-goal certificate
-   that G_goal is empty at hi.  Returns as wc_plan_certificate_fprint.  */
-int wc_critical_certificate_fprint(FILE * out, const wc_problem_t P,
-                                   const wc_critical_t C, wc_error_t err);
-
-/* One friction value of a sweep: a JSON object (no newline) or a few
-   lines of text.  */
-int wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
-                         const fmpq_t mu, int json);
+/* The printers of plans, sweeps and their certificates are in
+   io/print.h.  */
 
 #ifdef __cplusplus
 }

@@ -28,8 +28,6 @@
 #ifndef WC_STABILITY_H
 #define WC_STABILITY_H
 
-#include <stdio.h>
-
 #include <flint/fmpq.h>
 #include <flint/fmpz_mat.h>
 
@@ -114,12 +112,8 @@ void wc_classify_clear(wc_classify_t R);
 int wc_classify(wc_classify_t R, const wc_problem_t P, const fmpq * g,
                 int certificates, slong max_modes, wc_error_t err);
 
-/* Write the classification as a "strong-stability" certificate (see
-   wrenchcone-certificate(5)); R must have been computed with
-   certificates.  Returns WC_OK
-   or WC_EINTERNAL on a write error.  */
-int wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
-                                   const wc_classify_t R);
+/* The printers of classifications, sets and their certificates are in
+   io/print.h.  */
 
 /* The sets.  */
 typedef struct

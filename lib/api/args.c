@@ -40,6 +40,7 @@ _wc_request_init(_wc_request * R, _wc_command c)
             if (a->def != NULL)
                 _wc_arg_set_text(R, a, a->def, msg, sizeof msg);
     R->format = -1;
+    R->decimals = -1;
 }
 
 void

@@ -162,6 +162,17 @@ _wc_answer_status(const _wc_answer * A)
     return WC_OK;
 }
 
+wc_print_opts
+_wc_answer_opts(const _wc_answer * A, int f)
+{
+    wc_print_opts o = { WC_FORMAT_TEXT, 0, 0, NULL };
+
+    o.format = (wc_format) f;
+    o.approx = A->R->decimals >= 0;
+    o.decimals = A->R->decimals;
+    return o;
+}
+
 int
 _wc_answer_fprint_json(FILE * out, const _wc_answer * A)
 {

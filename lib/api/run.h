@@ -88,6 +88,8 @@ typedef struct _wc_request_struct
     _wc_command command;
     int from_request;           /* read from a JSON request, not argv */
     int format;                 /* the command line's --format (cli.h) */
+    int decimals;               /* the command line's --decimals=K for
+                                   text (print.h), -1 without */
     _wc_input problem;
     const char * mode;          /* cone, feasible, compare; draw --mode */
     int method;                 /* cone: a wc_method */
@@ -241,6 +243,9 @@ int _wc_run(_wc_answer * A, wc_error_t err);
 /* The status of a computed answer: WC_EDISAGREE for a comparison beyond
    its tolerance or a certificate that does not hold, else WC_OK.  */
 int _wc_answer_status(const _wc_answer * A);
+
+/* How A is printed in format f (a wc_format): A->R's decimals.  */
+wc_print_opts _wc_answer_opts(const _wc_answer * A, int f);
 
 /* The answer's JSON, exactly as `COMMAND --format=json` prints it (one
    line and its newline).  WC_OK or WC_EINTERNAL on a write error.  */

@@ -266,6 +266,7 @@ static int
 report_run(_wc_answer * A, wc_error_t err)
 {
     const _wc_input * in = &A->R->problem;
+    wc_print_opts o = _wc_answer_opts(A, WC_FORMAT_TEXT);
     sink s;
     int status = _wc_load_problem(A->P, in, err);
 
@@ -273,7 +274,7 @@ report_run(_wc_answer * A, wc_error_t err)
     {
         status = _wc_report_fprint(s.f, A->P, in->stream != NULL ? "-"
                                    : in->text != NULL ? in->name : in->path,
-                                   err);
+                                   &o, err);
         status = sink_close(&s, A, status, err);
     }
     return status;

@@ -60,24 +60,25 @@ static int
 cone_fprint_as(FILE * out, const _wc_answer * A, int fmt)
 {
     const _wc_request * R = A->R;
+    wc_print_opts o = _wc_answer_opts(A, fmt);
 
     if (R->arith_double)
-        return _wc_mode_fcone_fprint(out, R->mode, A->u.cone.F, fmt);
+        return _wc_mode_fcone_fprint(out, R->mode, A->u.cone.F, &o);
     return _wc_mode_cone_fprint(out, R->mode, A->u.cone.W,
                                 R->trace ? A->u.cone.T : NULL,
-                                R->method == WC_METHOD_PAPER, fmt);
+                                R->method == WC_METHOD_PAPER, &o);
 }
 
 static int
 cone_json(FILE * out, const _wc_answer * A)
 {
-    return cone_fprint_as(out, A, _WC_FMT_JSON);
+    return cone_fprint_as(out, A, WC_FORMAT_JSON);
 }
 
 static int
 cone_print(FILE * out, const _wc_answer * A)
 {
-    return cone_fprint_as(out, A, A->R->format < 0 ? _WC_FMT_TEXT
+    return cone_fprint_as(out, A, A->R->format < 0 ? WC_FORMAT_TEXT
                           : A->R->format);
 }
 
@@ -109,15 +110,23 @@ modes_run(_wc_answer * A, wc_error_t err)
 }
 
 static int
+modes_fprint_as(FILE * out, const _wc_answer * A, int fmt)
+{
+    wc_print_opts o = _wc_answer_opts(A, fmt);
+
+    return wc_modes_fprint(out, A->u.modes, A->R->witness, &o);
+}
+
+static int
 modes_json(FILE * out, const _wc_answer * A)
 {
-    return wc_modes_fprint(out, A->u.modes, 1, A->R->witness);
+    return modes_fprint_as(out, A, WC_FORMAT_JSON);
 }
 
 static int
 modes_print(FILE * out, const _wc_answer * A)
 {
-    return wc_modes_fprint(out, A->u.modes, 0, A->R->witness);
+    return modes_fprint_as(out, A, WC_FORMAT_TEXT);
 }
 
 const _wc_runner _wc_run_modes = {
@@ -148,22 +157,30 @@ feasible_run(_wc_answer * A, wc_error_t err)
 }
 
 static int
+feasible_fprint_as(FILE * out, const _wc_answer * A, int fmt)
+{
+    wc_print_opts o = _wc_answer_opts(A, fmt);
+
+    return wc_certificate_fprint(out, A->u.feasible, A->P, &o);
+}
+
+static int
 feasible_json(FILE * out, const _wc_answer * A)
 {
-    return wc_certificate_fprint(out, A->u.feasible, A->P, 1);
+    return feasible_fprint_as(out, A, WC_FORMAT_JSON);
 }
 
 static int
 feasible_print(FILE * out, const _wc_answer * A)
 {
-    return wc_certificate_fprint(out, A->u.feasible, A->P, 0);
+    return feasible_fprint_as(out, A, WC_FORMAT_TEXT);
 }
 
 static int
 feasible_certificate(FILE * out, const _wc_answer * A, wc_error_t err)
 {
     (void) err;
-    return wc_certificate_fprint(out, A->u.feasible, A->P, 1);
+    return feasible_fprint_as(out, A, WC_FORMAT_JSON);
 }
 
 const _wc_runner _wc_run_feasible = {
@@ -209,15 +226,23 @@ classify_run(_wc_answer * A, wc_error_t err)
 }
 
 static int
+classify_fprint_as(FILE * out, const _wc_answer * A, int fmt)
+{
+    wc_print_opts o = _wc_answer_opts(A, fmt);
+
+    return wc_classify_fprint(out, A->u.classify.K, &o);
+}
+
+static int
 classify_json(FILE * out, const _wc_answer * A)
 {
-    return wc_classify_fprint(out, A->u.classify.K, 1);
+    return classify_fprint_as(out, A, WC_FORMAT_JSON);
 }
 
 static int
 classify_print(FILE * out, const _wc_answer * A)
 {
-    return wc_classify_fprint(out, A->u.classify.K, 0);
+    return classify_fprint_as(out, A, WC_FORMAT_TEXT);
 }
 
 static int
@@ -276,25 +301,26 @@ compare_run(_wc_answer * A, wc_error_t err)
 }
 
 static int
-compare_fprint_as(FILE * out, const _wc_answer * A, int json)
+compare_fprint_as(FILE * out, const _wc_answer * A, int fmt)
 {
     const _wc_request * R = A->R;
+    wc_print_opts o = _wc_answer_opts(A, fmt);
 
     return wc_comparison_fprint(out, A->u.compare.cmp, A->u.compare.W,
                                 R->problem.name, R->mode, R->foreign.name,
-                                json);
+                                &o);
 }
 
 static int
 compare_json(FILE * out, const _wc_answer * A)
 {
-    return compare_fprint_as(out, A, 1);
+    return compare_fprint_as(out, A, WC_FORMAT_JSON);
 }
 
 static int
 compare_print(FILE * out, const _wc_answer * A)
 {
-    return compare_fprint_as(out, A, 0);
+    return compare_fprint_as(out, A, WC_FORMAT_TEXT);
 }
 
 const _wc_runner _wc_run_compare = {

@@ -68,22 +68,25 @@ stability_run(_wc_answer * A, wc_error_t err)
 }
 
 static int
+stability_fprint_as(FILE * out, const _wc_answer * A, int fmt)
+{
+    wc_print_opts o = _wc_answer_opts(A, fmt);
+
+    return _wc_stability_answer_fprint(out, A->u.stability.S, A->P,
+                                       A->R->bias.given
+                                       ? &A->u.stability.bias : NULL, &o);
+}
+
+static int
 stability_json(FILE * out, const _wc_answer * A)
 {
-    wc_stability_fprint(out, A->u.stability.S, 2);
-    if (A->R->bias.given)
-        _wc_bias_fprint_json(out, &A->u.stability.bias);
-    fputs("}\n", out);
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
+    return stability_fprint_as(out, A, WC_FORMAT_JSON);
 }
 
 static int
 stability_print(FILE * out, const _wc_answer * A)
 {
-    wc_stability_fprint_text(out, A->u.stability.S, A->P);
-    if (A->R->bias.given)
-        _wc_bias_fprint_text(out, &A->u.stability.bias);
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
+    return stability_fprint_as(out, A, WC_FORMAT_TEXT);
 }
 
 static int
@@ -142,22 +145,24 @@ plan_run(_wc_answer * A, wc_error_t err)
 }
 
 static int
-plan_fprint_as(FILE * out, const _wc_answer * A, int json)
+plan_fprint_as(FILE * out, const _wc_answer * A, int fmt)
 {
-    return A->R->wrench.given ? wc_plan_wrench_fprint(out, A->u.plan.pw, json)
-        : wc_plan_fprint(out, A->u.plan.plan, A->P, json);
+    wc_print_opts o = _wc_answer_opts(A, fmt);
+
+    return A->R->wrench.given ? wc_plan_wrench_fprint(out, A->u.plan.pw, &o)
+        : wc_plan_fprint(out, A->u.plan.plan, A->P, &o);
 }
 
 static int
 plan_json(FILE * out, const _wc_answer * A)
 {
-    return plan_fprint_as(out, A, 1);
+    return plan_fprint_as(out, A, WC_FORMAT_JSON);
 }
 
 static int
 plan_print(FILE * out, const _wc_answer * A)
 {
-    return plan_fprint_as(out, A, 0);
+    return plan_fprint_as(out, A, WC_FORMAT_TEXT);
 }
 
 static int
@@ -249,15 +254,23 @@ sweep_run(_wc_answer * A, wc_error_t err)
 }
 
 static int
+sweep_fprint_as(FILE * out, const _wc_answer * A, int fmt)
+{
+    wc_print_opts o = _wc_answer_opts(A, fmt);
+
+    return wc_sweep_fprint(out, A->u.sweep, A->P, &o);
+}
+
+static int
 sweep_json(FILE * out, const _wc_answer * A)
 {
-    return wc_sweep_fprint_json(out, A->u.sweep, A->P);
+    return sweep_fprint_as(out, A, WC_FORMAT_JSON);
 }
 
 static int
 sweep_print(FILE * out, const _wc_answer * A)
 {
-    return wc_sweep_fprint_text(out, A->u.sweep, A->P);
+    return sweep_fprint_as(out, A, WC_FORMAT_TEXT);
 }
 
 static int

@@ -5,14 +5,14 @@
    Public License, version 2 or (at your option) any later version.
 
    Internal (not installed).  The library holds no mutable global state:
-   what is per thread is thread-local (the progress hook, the decimals of
-   the text printers, FLINT's caches of integers and primes), and cddlib,
-   whose functions keep static scratch arrays, is called only from
-   exact/cddbridge.c under one lock.  FLINT asks every thread to call
-   flint_cleanup() before it exits, or its caches leak; a thread that
-   enters the library through an entry point that threads share
-   (wc_request_json, wc_batch) is registered here so that this happens
-   when it exits, without a call its caller could forget.  */
+   what is per thread is thread-local (the progress hook, FLINT's caches
+   of integers and primes), and cddlib, whose functions keep static
+   scratch arrays, is called only from exact/cddbridge.c under one lock.
+   FLINT asks every thread to call flint_cleanup() before it exits, or
+   its caches leak; a thread that enters the library through an entry
+   point that threads share (wc_request_json, wc_batch) is registered
+   here so that this happens when it exits, without a call its caller
+   could forget.  */
 
 #ifndef WC_CORE_THREAD_H
 #define WC_CORE_THREAD_H

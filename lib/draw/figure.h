@@ -19,6 +19,7 @@
 #include "core/problem.h"
 #include "core/limits.h"
 #include "analysis/push.h"
+#include "io/print.h"
 #include "draw/scene.h"
 
 #ifdef __cplusplus
@@ -70,11 +71,12 @@ int _wc_draw_titles(_wc_scene_t S, const wc_problem_t P, const char * title,
     ;
 
 /* The HTML page of `wrenchcone report`: every analysis of P with its
-   figures, the command lines naming the problem path.  An analysis P is
-   too large for is named on the page with its limit's message.  Returns
-   WC_OK, or WC_EINTERNAL (err set).  */
+   figures, the command lines naming the problem path, the analyses'
+   text as o says (its decimals; io/print.h).  An analysis P is too large
+   for is named on the page with its limit's message.  Returns WC_OK, or
+   WC_EINTERNAL (err set).  */
 int _wc_report_fprint(FILE * out, const wc_problem_t P, const char * path,
-                      wc_error_t err);
+                      const wc_print_opts * o, wc_error_t err);
 
 #ifdef __cplusplus
 }

@@ -64,11 +64,11 @@ escape0(FILE * out, const char * s)
     escape(out, s, strlen(s));
 }
 
-/* What a printer writes, escaped, in a <pre>.  */
-typedef int (* printer)(FILE *, const void *);
+/* What a printer writes as o says, escaped, in a <pre>.  */
+typedef int (* printer)(FILE *, const void *, const wc_print_opts *);
 
 static int
-pre(FILE * out, printer p, const void * data)
+pre(FILE * out, printer p, const void * data, const wc_print_opts * o)
 {
     char * buf = NULL;
     size_t len = 0;
@@ -77,7 +77,7 @@ pre(FILE * out, printer p, const void * data)
 
     if (m == NULL)
         return WC_EINTERNAL;
-    status = p(m, data);
+    status = p(m, data, o);
     if (fclose(m) != 0 && status == WC_OK)
         status = WC_EINTERNAL;
     if (status == WC_OK)
@@ -206,21 +206,22 @@ push_table(FILE * out, const wc_push_t R, const char * what)
 }
 
 static int
-put_problem(FILE * f, const void * P)
+put_problem(FILE * f, const void * P, const wc_print_opts * o)
 {
+    (void) o;
     return wc_problem_fprint(f, P);
 }
 
 static int
-put_modes(FILE * f, const void * M)
+put_modes(FILE * f, const void * M, const wc_print_opts * o)
 {
-    return wc_modes_fprint(f, M, 0, 1);
+    return wc_modes_fprint(f, M, 1, o);
 }
 
 static int
-put_stability(FILE * f, const void * S)
+put_stability(FILE * f, const void * S, const wc_print_opts * o)
 {
-    return wc_stability_fprint(f, S, 0);
+    return wc_stability_fprint(f, S, NULL, o);
 }
 
 typedef struct
@@ -231,25 +232,25 @@ typedef struct
 plan_job;
 
 static int
-put_plan(FILE * f, const void * j)
+put_plan(FILE * f, const void * j, const wc_print_opts * o)
 {
     const plan_job * p = j;
 
-    return wc_plan_fprint(f, p->R, p->P, 0);
+    return wc_plan_fprint(f, p->R, p->P, o);
 }
 
-/* A section's end: the answer (put(data)) when status is WC_OK, the
-   commands that reproduce it (the NULL ones left out), and the note
-   when the problem made it fail.  */
+/* A section's end: the answer (put(data), as o says) when status is
+   WC_OK, the commands that reproduce it (the NULL ones left out), and
+   the note when the problem made it fail.  */
 static int
 section_end(FILE * out, int status, printer put, const void * data,
-            const char * const cmds[3], const char * path, wc_error_t err,
-            const char * what)
+            const wc_print_opts * o, const char * const cmds[3],
+            const char * path, wc_error_t err, const char * what)
 {
     int k;
 
     if (status == WC_OK)
-        status = pre(out, put, data);
+        status = pre(out, put, data, o);
     for (k = 0; k < 3; k++)
         if (cmds[k] != NULL)
             command(out, cmds[k], path);
@@ -258,7 +259,7 @@ section_end(FILE * out, int status, printer put, const void * data,
 
 static int
 section_modes(FILE * out, const wc_problem_t P, const char * path,
-              wc_error_t err)
+              const wc_print_opts * o, wc_error_t err)
 {
     static const char * const cmds[3] = { "modes --witness",
                                           "draw --modes -o modes.svg", NULL };
@@ -273,7 +274,7 @@ section_modes(FILE * out, const wc_problem_t P, const char * path,
     status = wc_modes_enumerate(M, P, err);
     if (status == WC_OK)
         status = figure(out, FIG_MODES, P, err);
-    status = section_end(out, status, put_modes, M, cmds, path, err,
+    status = section_end(out, status, put_modes, M, o, cmds, path, err,
                          "The modes");
     wc_modes_clear(M);
     return status;
@@ -281,7 +282,7 @@ section_modes(FILE * out, const wc_problem_t P, const char * path,
 
 static int
 section_stability(FILE * out, const wc_problem_t P, const char * path,
-                  wc_error_t err)
+                  const wc_print_opts * o, wc_error_t err)
 {
     static const char * const cmds[3] = {
         "stability", "draw --stability -o stability.svg", NULL };
@@ -305,7 +306,7 @@ section_stability(FILE * out, const wc_problem_t P, const char * path,
                    "stable, paper semantics (eq. 19)");
         push_table(out, T->push_weak, "Pushing region: weakly stable");
     }
-    status = section_end(out, status, put_stability, T, cmds, path, err,
+    status = section_end(out, status, put_stability, T, o, cmds, path, err,
                          "The stability sets");
     wc_stability_clear(T);
     return status;
@@ -313,7 +314,7 @@ section_stability(FILE * out, const wc_problem_t P, const char * path,
 
 static int
 section_plan(FILE * out, const wc_problem_t P, const char * path,
-             wc_error_t err)
+             const wc_print_opts * o, wc_error_t err)
 {
     const char * const cmds[3] = {
         "plan", "draw --plan -o goal.svg",
@@ -336,7 +337,7 @@ section_plan(FILE * out, const wc_problem_t P, const char * path,
     if (status == WC_OK && P->n <= _WC_DRAW_GRAPH_MAX_FIXELS)
         status = figure(out, FIG_GRAPH, P, err);
     j.R = R;
-    status = section_end(out, status, put_plan, &j, cmds, path, err,
+    status = section_end(out, status, put_plan, &j, o, cmds, path, err,
                          "The insertion plan");
     wc_plan_clear(R);
     return status;
@@ -344,7 +345,7 @@ section_plan(FILE * out, const wc_problem_t P, const char * path,
 
 int
 _wc_report_fprint(FILE * out, const wc_problem_t P, const char * path,
-                  wc_error_t err)
+                  const wc_print_opts * o, wc_error_t err)
 {
     const char * name = _wc_draw_name(P);
     int status;
@@ -360,14 +361,14 @@ _wc_report_fprint(FILE * out, const wc_problem_t P, const char * path,
             "approximation, for reading only, and the figures are drawn in "
             "floating point from the exact results.</p>\n", wc_version());
     fputs("<h2>The problem</h2>\n", out);
-    status = pre(out, put_problem, P);
+    status = pre(out, put_problem, P, o);
     command(out, "report -o report.html", path);
     if (status == WC_OK)
-        status = section_modes(out, P, path, err);
+        status = section_modes(out, P, path, o, err);
     if (status == WC_OK)
-        status = section_stability(out, P, path, err);
+        status = section_stability(out, P, path, o, err);
     if (status == WC_OK)
-        status = section_plan(out, P, path, err);
+        status = section_plan(out, P, path, o, err);
     fputs("</body>\n</html>\n", out);
     if (status == WC_OK && ferror(out))
         status = WC_EINTERNAL;

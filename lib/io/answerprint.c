@@ -1,5 +1,5 @@
-/* answerprint.c -- a mode's cone and a bias's robustness, written
-   (answerprint.h).
+/* answerprint.c -- a mode's cone, and stability with a bias's
+   robustness, written (answerprint.h).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -7,89 +7,85 @@
 
 #include <config.h>
 
-#include <stdlib.h>
-#include <string.h>
-
 #include "io/answerprint.h"
 #include "io/fconeprint.h"
+#include "io/printutil.h"
 #include "core/version.h"
 
 
 int
 _wc_mode_cone_fprint(FILE * out, const char * mode, const wc_cone_t W,
-                     const wc_trace_t T, int paper, int fmt)
+                     const wc_trace_t T, int paper, const wc_print_opts * o)
 {
-    switch (fmt)
+    wc_format f = o != NULL ? o->format : WC_FORMAT_TEXT;
+    wc_print_opts in2 = _wc_print_indented(o, "  ");
+    wc_print_opts star = _wc_print_indented(o, "* ");
+
+    switch (f)
     {
-    case _WC_FMT_JSON:
+    case WC_FORMAT_JSON:
         fputs(WC_JSON_OPEN "\"mode\": ", out);
         wc_fprint_json_string(out, mode);
         fputs(", \"cone\": ", out);
-        wc_cone_fprint_json(out, W);
+        wc_cone_fprint(out, W, o);
         if (T != NULL)
         {
             fprintf(out, ", \"method\": \"%s\", \"trace\": ",
                     paper ? "paper" : "direct");
-            wc_trace_fprint_json(out, T);
+            wc_trace_fprint(out, T, o);
         }
         fputs("}\n", out);
         break;
-    case _WC_FMT_TEXT:
+    case WC_FORMAT_CDD:
+    case WC_FORMAT_INE:
+    case WC_FORMAT_EXT:
+        if (T != NULL)
+            wc_trace_fprint(out, T, &star);
+        fprintf(out, "* wrenchcone: W(%s), the wrench cone of mode %s\n",
+                mode, mode);
+        wc_cone_fprint(out, W, o);
+        break;
+    default:
         if (T != NULL)
         {
             fprintf(out, "trace (%s route):\n", paper ? "paper, Section 5"
                     : "direct, M V_x + (-J) D_x");
-            wc_trace_fprint_text(out, T, "  ");
+            wc_trace_fprint(out, T, &in2);
             putc('\n', out);
         }
         fprintf(out, "W(%s): wrench cone of mode %s\n", mode, mode);
-        wc_cone_fprint_text(out, W, "  ");
-        break;
-    default:
-    {
-        size_t len = 2 * strlen(mode) + 64;
-        char * title = malloc(len);
-
-        if (title == NULL)
-            return WC_EINTERNAL;
-        snprintf(title, len, "wrenchcone: W(%s), the wrench cone of mode %s",
-                 mode, mode);
-        if (T != NULL)
-            wc_trace_fprint_text(out, T, "* ");
-        wc_cone_fprint_cdd(out, W, title, fmt == _WC_FMT_INE ? 1
-                           : fmt == _WC_FMT_EXT ? 2 : 3);
-        free(title);
+        wc_cone_fprint(out, W, &in2);
         break;
     }
-    }
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
+    return _wc_fprint_done(out);
 }
 
 int
 _wc_mode_fcone_fprint(FILE * out, const char * mode, const wc_fcone_t F,
-                      int fmt)
+                      const wc_print_opts * o)
 {
-    if (fmt == _WC_FMT_JSON)
+    wc_format f = o != NULL ? o->format : WC_FORMAT_TEXT;
+
+    if (f == WC_FORMAT_JSON)
     {
         fputs(WC_JSON_OPEN "\"mode\": ", out);
         wc_fprint_json_string(out, mode);
         fputs(", \"cone\": ", out);
-        wc_fcone_fprint(out, F, WC_FCONE_JSON);
+        wc_fcone_fprint(out, F, o);
         fputs("}\n", out);
     }
-    else if (fmt == _WC_FMT_TEXT)
-    {
-        fprintf(out, "W(%s): wrench cone of mode %s\n", mode, mode);
-        wc_fcone_fprint(out, F, WC_FCONE_TEXT);
-    }
-    else
+    else if (f == WC_FORMAT_CDD || f == WC_FORMAT_INE || f == WC_FORMAT_EXT)
     {
         fprintf(out, "* wrenchcone: W(%s), the wrench cone of mode %s\n",
                 mode, mode);
-        wc_fcone_fprint(out, F, fmt == _WC_FMT_INE ? WC_FCONE_INE
-                        : fmt == _WC_FMT_EXT ? WC_FCONE_EXT : WC_FCONE_CDD);
+        wc_fcone_fprint(out, F, o);
     }
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
+    else
+    {
+        fprintf(out, "W(%s): wrench cone of mode %s\n", mode, mode);
+        wc_fcone_fprint(out, F, o);
+    }
+    return _wc_fprint_done(out);
 }
 
 void
@@ -120,8 +116,9 @@ _wc_bias_clear(_wc_bias * B)
         fmpq_clear(B->rho[i]);
 }
 
-int
-_wc_bias_fprint_text(FILE * out, const _wc_bias * B)
+/* The robustness of the bias as text: lines.  */
+static void
+bias_text(FILE * out, const _wc_bias * B, const wc_print_opts * o)
 {
     const char * names[2] = { "exact", "paper" };
     int i;
@@ -131,10 +128,10 @@ _wc_bias_fprint_text(FILE * out, const _wc_bias * B)
     {
         if (i)
             fputs(", ", out);
-        wc_fprint_fmpq_text(out, B->b + i);
+        wc_fprint_fmpq_text(out, B->b + i, o);
     }
     fputs("), disturbances measured by max(|fx|, |fy|, |tau| / ", out);
-    wc_fprint_fmpq_text(out, B->L);
+    wc_fprint_fmpq_text(out, B->L, o);
     fputs("):\n", out);
     for (i = 0; i < 2; i++)
         if (B->infinite[i])
@@ -147,16 +144,17 @@ _wc_bias_fprint_text(FILE * out, const _wc_bias * B)
         else
         {
             fprintf(out, "  %s: rho = ", names[i]);
-            wc_fprint_fmpq_text(out, B->rho[i]);
+            wc_fprint_fmpq_text(out, B->rho[i], o);
             fprintf(out, ": every disturbance d with ||d|| %s rho leaves "
                     "b + d strongly stable%s\n", B->closed[i] ? "<=" : "<",
                     B->closed[i] ? "" : " (some d with ||d|| = rho does not)");
         }
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
 }
 
-int
-_wc_bias_fprint_json(FILE * out, const _wc_bias * B)
+/* The robustness of the bias as JSON: the member ", \"bias\": {...}"
+   of the stability answer's object.  */
+static void
+bias_json(FILE * out, const _wc_bias * B)
 {
     int i;
 
@@ -185,5 +183,24 @@ _wc_bias_fprint_json(FILE * out, const _wc_bias * B)
         }
     }
     putc('}', out);
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
+}
+
+int
+_wc_stability_answer_fprint(FILE * out, const wc_stability_t S,
+                            const wc_problem_t P, const _wc_bias * B,
+                            const wc_print_opts * o)
+{
+    if (!_wc_print_json(o))
+    {
+        wc_stability_fprint(out, S, P, o);
+        if (B != NULL)
+            bias_text(out, B, o);
+        return _wc_fprint_done(out);
+    }
+    fputs(WC_JSON_OPEN, out);
+    _wc_stability_fprint_members(out, S);
+    if (B != NULL)
+        bias_json(out, B);
+    fputs("}\n", out);
+    return _wc_fprint_done(out);
 }

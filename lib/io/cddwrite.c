@@ -124,8 +124,7 @@ fmpz_entry(FILE * out, const void * A, slong i, slong j, int sign)
 }
 
 int
-wc_cone_fprint_cdd(FILE * out, const wc_cone_t C, const char * title,
-                   int which)
+_wc_cone_fprint_cdd(FILE * out, const wc_cone_t C, int which)
 {
     _wc_cdd_cone K;
     slong f, i;
@@ -141,8 +140,6 @@ wc_cone_fprint_cdd(FILE * out, const wc_cone_t C, const char * title,
     K.q = fmpz_mat_nrows(C->eqs);
     K.k = fmpz_mat_nrows(C->rays);
     K.l = fmpz_mat_nrows(C->lines);
-    if (title != NULL)
-        fprintf(out, "* %s\n", title);
     if (C->empty)
         fputs("* the cone is empty\n", out);
     else if (wc_cone_excluded_faces(C) == 0)

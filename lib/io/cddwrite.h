@@ -14,6 +14,8 @@
 
 #include <flint/flint.h>
 
+#include "exact/cone.h"
+
 /* Print sign times entry (i, j) of the matrix A, with no blank before.  */
 typedef void (*_wc_cdd_entry_fn)(FILE * out, const void * A, slong i,
                                  slong j, int sign);
@@ -35,5 +37,10 @@ _wc_cdd_cone;
    matrices are not read then).  Comment lines are the caller's.  */
 void _wc_cdd_fprint_reps(FILE * out, const _wc_cdd_cone * C, int empty,
                          int which);
+
+/* The exact cone C as wc_cone_fprint writes it in a cdd format: which =
+   1 the H-representation (.ine) of the closure, 2 the V-representation
+   (.ext), 3 both, H first, after comment lines on its strictness.  */
+int _wc_cone_fprint_cdd(FILE * out, const wc_cone_t C, int which);
 
 #endif

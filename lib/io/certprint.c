@@ -45,9 +45,9 @@ void
 _wc_fprint_motion(FILE * out, const wc_motion_struct * a, slong n)
 {
     fputs("{\"nudot\": ", out);
-    wc_fprint_qvec(out, a->nudot, 3, 1);
+    wc_fprint_qvec(out, a->nudot, 3, _wc_print_as_json);
     fputs(", \"c\": ", out);
-    wc_fprint_qvec(out, a->c, 2 * n, 1);
+    wc_fprint_qvec(out, a->c, 2 * n, _wc_print_as_json);
     fputc('}', out);
 }
 
@@ -93,7 +93,8 @@ _wc_fprint_piece_proof(FILE * out, const _wc_piece_proof * pp, slong nexcl,
         {
             if (g > 0)
                 fputs(", ", out);
-            wc_fprint_qvec(out, pp->c + g * 2 * n, 2 * n, 1);
+            wc_fprint_qvec(out, pp->c + g * 2 * n, 2 * n,
+                           _wc_print_as_json);
         }
         fputs("],\n   ", out);
     }

@@ -497,12 +497,12 @@ comparison_fprint_json(FILE * out, const wc_comparison_t R,
 int
 wc_comparison_fprint(FILE * out, const wc_comparison_t R, const wc_cone_t W,
                      const char * problem, const char * mode,
-                     const char * file, int json)
+                     const char * file, const wc_print_opts * o)
 {
     slong i, excl = W->empty ? 0 : wc_cone_excluded_faces(W);
     int first = 1;
 
-    if (json)
+    if (o != NULL && o->format == WC_FORMAT_JSON)
     {
         comparison_fprint_json(out, R, W, problem, mode, file);
         return ferror(out) ? WC_EINTERNAL : WC_OK;

@@ -196,15 +196,15 @@ fprint_cdd(FILE * out, const wc_fcone_t C, int which)
 }
 
 int
-wc_fcone_fprint(FILE * out, const wc_fcone_t C, int format)
+wc_fcone_fprint(FILE * out, const wc_fcone_t C, const wc_print_opts * o)
 {
-    switch (format)
+    switch (o != NULL ? o->format : WC_FORMAT_TEXT)
     {
-    case WC_FCONE_TEXT: fprint_text(out, C); break;
-    case WC_FCONE_JSON: fprint_json(out, C); break;
-    case WC_FCONE_INE: fprint_cdd(out, C, 1); break;
-    case WC_FCONE_EXT: fprint_cdd(out, C, 2); break;
-    case WC_FCONE_CDD: fprint_cdd(out, C, 3); break;
+    case WC_FORMAT_TEXT: fprint_text(out, C); break;
+    case WC_FORMAT_JSON: fprint_json(out, C); break;
+    case WC_FORMAT_INE: fprint_cdd(out, C, 1); break;
+    case WC_FORMAT_EXT: fprint_cdd(out, C, 2); break;
+    case WC_FORMAT_CDD: fprint_cdd(out, C, 3); break;
     default: return WC_EINTERNAL;
     }
     return ferror(out) ? WC_EINTERNAL : WC_OK;

@@ -10,32 +10,25 @@
 #include <stdio.h>
 
 #include "float/floatcone.h"
+#include "io/print.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* Output formats of wc_fcone_fprint.  */
-typedef enum
-{
-    WC_FCONE_TEXT = 0,  /* for people; a header says the numbers are floats */
-    WC_FCONE_JSON = 1,  /* the CONE object of wrenchcone(1), JSON where it makes sense */
-    WC_FCONE_INE = 2,   /* cddlib .ine of the closure, real numbers */
-    WC_FCONE_EXT = 3,   /* cddlib .ext of the closure, real numbers */
-    WC_FCONE_CDD = 4    /* .ine then .ext */
-}
-wc_fcone_format;
-
-/* Write C.  Numbers are printed with %.17g (they read back to the same
-   doubles).  JSON, on one line without a newline: {"empty", "arith":
-   "double", "eps", "dim", "lineality_dim", "closed", "inequalities",
-   "strict" (a bool per inequality), "equalities", "rays", "strict_rays",
-   "lines"} with numbers as JSON numbers; an empty cone is {"empty": true,
-   "arith": "double", "eps": ...}.  Text: lines indented by two spaces.
-   cdd: strictness, which cdd files cannot express, goes into comment lines
-   starting with '*'.  Returns WC_OK, or WC_EINTERNAL when the stream
-   reports an error (or format is unknown).  */
-int wc_fcone_fprint(FILE * out, const wc_fcone_t C, int format);
+/* Write C as o says (print.h): text for people, lines indented by two
+   spaces, a header saying the numbers are floats; JSON, the CONE object
+   of wrenchcone(1), JSON where it makes sense, on one line without a
+   newline: {"empty", "arith": "double", "eps", "dim", "lineality_dim",
+   "closed", "inequalities", "strict" (a bool per inequality),
+   "equalities", "rays", "strict_rays", "lines"} with numbers as JSON
+   numbers, an empty cone {"empty": true, "arith": "double", "eps": ...};
+   or cddlib's formats of the closure with real numbers, strictness,
+   which cdd files cannot express, in comment lines starting with '*'.
+   Numbers are printed with %.17g (they read back to the same doubles);
+   o's decimals and indent are not used.  Returns WC_OK, or WC_EINTERNAL
+   when the stream reports an error (or the format is unknown).  */
+int wc_fcone_fprint(FILE * out, const wc_fcone_t C, const wc_print_opts * o);
 
 #ifdef __cplusplus
 }

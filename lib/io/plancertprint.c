@@ -38,7 +38,7 @@ put_strings(FILE * out, _wc_plancert * C, wc_error_t err)
             fputs("{\"string\": ", out);
             wc_fprint_json_string(out, R->T->strings[R->T->needed[j]]);
             fputs(",\n   \"cone\": ", out);
-            wc_cone_fprint_json(out, R->cones + j);
+            wc_cone_fprint(out, R->cones + j, _wc_print_as_json);
             _wc_fprint_cone_proof(out, &cp, C->m.n);
             putc('}', out);
         }
@@ -103,7 +103,7 @@ wc_plan_certificate_fprint(FILE * out, const wc_problem_t P,
           " \"problem\": ", out);
     _wc_fprint_dyn_problem(out, P);
     fputs(",\n \"goal\": ", out);
-    wc_set_fprint_json(out, R->goal);
+    wc_set_fprint(out, R->goal, _wc_print_as_json);
     _wc_fprint_planes(out, &T);
     status = put_strings(out, &C, err);
     if (status == WC_OK)
@@ -146,7 +146,7 @@ put_lower(FILE * out, const wc_problem_t Q, const fmpq * g, wc_error_t err)
     _wc_plan_model_mu(mu, Q);
     status = wc_plan_strings(T, Q->n, err);
     fputs("{\"wrench\": ", out);
-    wc_fprint_qvec(out, g, 3, 1);
+    wc_fprint_qvec(out, g, 3, _wc_print_as_json);
     fputs(",\n  \"strings\": [", out);
     for (j = 0; j < T->nneeded && status == WC_OK; j++)
     {

@@ -118,15 +118,17 @@ push_length(const wc_push_t R, const wc_problem_t P, double * total)
 }
 
 static void
-text_witness(FILE * out, const char * what, const fmpq * g)
+text_witness(FILE * out, const char * what, const fmpq * g,
+             const wc_print_opts * o)
 {
     fprintf(out, "%s", what);
-    wc_fprint_qvec(out, g, 3, 0);
+    wc_fprint_qvec(out, g, 3, o);
 }
 
 /* The plan as JSON; ex lists the exactly needed strings.  */
 static void
-plan_json(FILE * out, const wc_plan_t R, const slong * ex)
+plan_json(FILE * out, const wc_plan_t R, const slong * ex,
+          const wc_print_opts * o)
 {
     const wc_plan_strings_struct * T = R->T;
     slong n = T->n, i, k;
@@ -155,39 +157,39 @@ plan_json(FILE * out, const wc_plan_t R, const slong * ex)
                     k++ ? ", " : "", T->strings[i],
                     T->strings[T->contained_in[i]]);
     fputs("], \"goal\": ", out);
-    wc_set_fprint_json(out, R->goal);
+    wc_set_fprint(out, R->goal, o);
     fprintf(out, ", \"goal_in_strong\": %s", _wc_tf(R->goal_in_strong));
     if (!R->goal_in_strong)
     {
         fputs(", \"goal_not_strong\": ", out);
-        wc_fprint_qvec(out, R->strong_witness, 3, 1);
+        wc_fprint_qvec(out, R->strong_witness, 3, o);
     }
     fprintf(out, ", \"goal_in_strong_paper\": %s",
             _wc_tf(R->goal_in_strong_paper));
     if (!R->goal_in_strong_paper)
     {
         fputs(", \"goal_not_strong_paper\": ", out);
-        wc_fprint_qvec(out, R->paper_witness, 3, 1);
+        wc_fprint_qvec(out, R->paper_witness, 3, o);
     }
     if (R->has_push)
     {
         fputs(", \"push\": {\"goal\": ", out);
-        wc_push_fprint(out, R->push_goal, 1, "");
+        wc_push_fprint(out, R->push_goal, NULL, o);
         putc('}', out);
     }
     if (R->complete)
     {
         fputs(", \"complete\": {\"accepted\": ", out);
-        wc_set_fprint_json(out, R->accepted);
+        wc_set_fprint(out, R->accepted, o);
         fputs(", \"outside_goal\": ", out);
         if (R->has_extra)
-            wc_fprint_qvec(out, R->extra, 3, 1);
+            wc_fprint_qvec(out, R->extra, 3, o);
         else
             fputs("null", out);
         if (R->has_push_accepted)
         {
             fputs(", \"push\": ", out);
-            wc_push_fprint(out, R->push_accepted, 1, "");
+            wc_push_fprint(out, R->push_accepted, NULL, o);
         }
         putc('}', out);
     }
@@ -197,11 +199,13 @@ plan_json(FILE * out, const wc_plan_t R, const slong * ex)
 /* The plan as text; ex lists the exactly needed strings.  */
 static void
 plan_text(FILE * out, const wc_plan_t R, const wc_problem_t P,
-          const slong * ex)
+          const slong * ex, const wc_print_opts * o)
 {
     const wc_plan_strings_struct * T = R->T;
     slong n = T->n, i, k;
     ulong S, full = (UWORD(1) << n) - 1;
+    wc_print_opts in2 = _wc_print_indented(o, "  ");
+    wc_print_opts in4 = _wc_print_indented(o, "    ");
 
     fprintf(out, "insertion plan for %ld fixel%s (a state marks each "
             "achieved contact with 1):\n", (long) n, n == 1 ? "" : "s");
@@ -240,20 +244,22 @@ plan_text(FILE * out, const wc_plan_t R, const wc_problem_t P,
     fputs("  needed, exactly: ", out);
     strlist(out, T->strings, ex, R->nexact, 0);
     fputs("\nG_goal (wrenches in the cone of no needed string):\n", out);
-    wc_set_fprint_text(out, R->goal, "  ");
+    wc_set_fprint(out, R->goal, &in2);
     fputs("G_goal inside G_strong (eq. 25), the goal state's strongly stable "
           "wrenches:\n", out);
     if (R->goal_in_strong)
         fputs("  exact semantics: yes\n", out);
     else
-        text_witness(out, "  exact semantics: no, e.g. g = ", R->strong_witness);
+        text_witness(out, "  exact semantics: no, e.g. g = ",
+                     R->strong_witness, o);
     if (!R->goal_in_strong)
         fputs(" is in G_goal but not strongly stable\n", out);
     if (R->goal_in_strong_paper)
         fputs("  paper semantics: yes\n", out);
     else
     {
-        text_witness(out, "  paper semantics: no, e.g. g = ", R->paper_witness);
+        text_witness(out, "  paper semantics: no, e.g. g = ",
+                     R->paper_witness, o);
         fputs(" is in G_goal and in some W(x), x != n..n\n", out);
     }
     if (R->has_push)
@@ -262,7 +268,7 @@ plan_text(FILE * out, const wc_plan_t R, const wc_problem_t P,
 
         fputs("where a frictionless finger seats the part from any "
               "state:\n", out);
-        wc_push_fprint_text(out, R->push_goal, P, "  ");
+        wc_push_fprint(out, R->push_goal, P, &in2);
         fprintf(out, "  length %.4g of %.4g (floating point, for reading "
                 "only)\n", len, total);
     }
@@ -270,11 +276,11 @@ plan_text(FILE * out, const wc_plan_t R, const wc_problem_t P,
     {
         fputs("complete plan (every transition graph the wrench allows "
               "reaches the goal):\n", out);
-        wc_set_fprint_text(out, R->accepted, "  ");
+        wc_set_fprint(out, R->accepted, &in2);
         if (R->has_extra)
         {
             text_witness(out, "  accepted outside G_goal, e.g. g = ",
-                         R->extra);
+                         R->extra, o);
             putc('\n', out);
         }
         else
@@ -282,21 +288,21 @@ plan_text(FILE * out, const wc_plan_t R, const wc_problem_t P,
         if (R->has_push_accepted)
         {
             fputs("  where a frictionless finger seats the part:\n", out);
-            wc_push_fprint_text(out, R->push_accepted, P, "    ");
+            wc_push_fprint(out, R->push_accepted, P, &in4);
         }
     }
 }
 
 int
 wc_plan_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
-               int json)
+               const wc_print_opts * o)
 {
     slong * ex = exact_list(R);
 
-    if (json)
-        plan_json(out, R, ex);
+    if (_wc_print_json(o))
+        plan_json(out, R, ex, o);
     else
-        plan_text(out, R, P, ex);
+        plan_text(out, R, P, ex, o);
     flint_free(ex);
     return _wc_fprint_done(out);
 }
@@ -318,14 +324,16 @@ verdict_name(wc_plan_verdict v)
 }
 
 int
-wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
+wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W,
+                      const wc_print_opts * o)
 {
+    int json = _wc_print_json(o);
     slong i, n = W->n;
 
     if (json)
     {
         fputs(WC_JSON_OPEN "\"wrench\": ", out);
-        wc_fprint_qvec(out, W->g, 3, 1);
+        wc_fprint_qvec(out, W->g, 3, o);
         fprintf(out, ", \"in_goal\": %s, \"holding\": ", _wc_tf(W->in_goal));
         strlist(out, W->holding, NULL, W->nholding, 1);
         if (W->complete)
@@ -355,7 +363,7 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
         return _wc_fprint_done(out);
     }
     fputs("wrench g = ", out);
-    wc_fprint_qvec(out, W->g, 3, 0);
+    wc_fprint_qvec(out, W->g, 3, o);
     fputs(W->in_goal ? "\n  in G_goal: in the cone of no needed string\n"
           : "\n  not in G_goal: held by ", out);
     if (!W->in_goal)
@@ -407,8 +415,9 @@ wc_plan_wrench_fprint(FILE * out, const wc_plan_wrench_t W, int json)
 
 int
 wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
-                     const fmpq_t mu, int json)
+                     const fmpq_t mu, const wc_print_opts * o)
 {
+    int json = _wc_print_json(o);
     const wc_set_struct * G = R->goal;
     slong i, k, * ex = exact_list(R);
     double total = 0, len = 0;
@@ -422,13 +431,13 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
         fputs("\", \"needed_exact\": ", out);
         strlist(out, R->T->strings, ex, R->nexact, 1);
         fputs(", \"goal\": ", out);
-        wc_set_fprint_json(out, G);
+        wc_set_fprint(out, G, o);
         fprintf(out, ", \"goal_in_strong\": %s, \"goal_in_strong_paper\": %s",
                 _wc_tf(R->goal_in_strong), _wc_tf(R->goal_in_strong_paper));
         if (R->has_push)
         {
             fputs(", \"push\": {\"goal\": ", out);
-            wc_push_fprint(out, R->push_goal, 1, "");
+            wc_push_fprint(out, R->push_goal, NULL, o);
             fprintf(out, "}, \"push_length_approx\": %.6g, "
                     "\"boundary_length_approx\": %.6g", len, total);
         }
@@ -437,7 +446,7 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
         return _wc_fprint_done(out);
     }
     fputs("mu = ", out);
-    wc_fprint_fmpq_text(out, mu);
+    wc_fprint_fmpq_text(out, mu, o);
     if (G->empty)
         fputs(": G_goal empty", out);
     else
@@ -490,7 +499,9 @@ wc_plan_sweep_fprint(FILE * out, const wc_plan_t R, const wc_problem_t P,
     }
     if (R->has_push)
     {
-        wc_push_fprint_text(out, R->push_goal, P, "  push ");
+        wc_print_opts push = _wc_print_indented(o, "  push ");
+
+        wc_push_fprint(out, R->push_goal, P, &push);
         fprintf(out, "  push length %.4g of %.4g (%.1f%%; floating point, "
                 "for reading only)\n", len, total,
                 total > 0 ? 100 * len / total : 0.0);

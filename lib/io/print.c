@@ -15,6 +15,7 @@
 #include "core/certkind.h"
 #include "io/print.h"
 #include "io/printutil.h"
+#include "io/cddwrite.h"
 
 
 static void
@@ -46,8 +47,8 @@ json_rows(FILE * out, const fmpz_mat_t A)
     putc(']', out);
 }
 
-int
-wc_cone_fprint_json(FILE * out, const wc_cone_t C)
+static int
+cone_json(FILE * out, const wc_cone_t C)
 {
     static const char * const key[4] = { "inequalities", "equalities",
                                          "rays", "lines" };
@@ -196,8 +197,8 @@ row_marks(const wc_cone_t C)
     return mark;
 }
 
-int
-wc_cone_fprint_text(FILE * out, const wc_cone_t C, const char * indent)
+static int
+cone_text(FILE * out, const wc_cone_t C, const char * indent)
 {
     slong f, i, excl, nr;
     const char ** mark;
@@ -253,7 +254,25 @@ wc_cone_fprint_text(FILE * out, const wc_cone_t C, const char * indent)
 }
 
 int
-wc_trace_fprint_text(FILE * out, const wc_trace_t T, const char * prefix)
+wc_cone_fprint(FILE * out, const wc_cone_t C, const wc_print_opts * o)
+{
+    switch (o != NULL ? o->format : WC_FORMAT_TEXT)
+    {
+    case WC_FORMAT_JSON:
+        return cone_json(out, C);
+    case WC_FORMAT_CDD:
+        return _wc_cone_fprint_cdd(out, C, 3);
+    case WC_FORMAT_INE:
+        return _wc_cone_fprint_cdd(out, C, 1);
+    case WC_FORMAT_EXT:
+        return _wc_cone_fprint_cdd(out, C, 2);
+    default:
+        return cone_text(out, C, _wc_print_indent(o));
+    }
+}
+
+static int
+trace_text(FILE * out, const wc_trace_t T, const char * prefix)
 {
     slong e, i, j;
 
@@ -291,8 +310,8 @@ wc_trace_fprint_text(FILE * out, const wc_trace_t T, const char * prefix)
     return _wc_fprint_done(out);
 }
 
-int
-wc_trace_fprint_json(FILE * out, const wc_trace_t T)
+static int
+trace_json(FILE * out, const wc_trace_t T, const wc_print_opts * o)
 {
     slong e, i;
 
@@ -315,7 +334,7 @@ wc_trace_fprint_json(FILE * out, const wc_trace_t T)
         {
             if (i)
                 fputs(", ", out);
-            wc_fprint_qvec(out, t->m->rows[i], c, 1);
+            wc_fprint_qvec(out, t->m->rows[i], c, o);
         }
         fputs("]}", out);
     }
@@ -324,8 +343,17 @@ wc_trace_fprint_json(FILE * out, const wc_trace_t T)
 }
 
 int
-wc_modes_fprint(FILE * out, const wc_modes_t M, int json, int witness)
+wc_trace_fprint(FILE * out, const wc_trace_t T, const wc_print_opts * o)
 {
+    return _wc_print_json(o) ? trace_json(out, T, o)
+        : trace_text(out, T, _wc_print_indent(o));
+}
+
+int
+wc_modes_fprint(FILE * out, const wc_modes_t M, int witness,
+                const wc_print_opts * o)
+{
+    int json = _wc_print_json(o);
     slong i;
 
     if (!json)
@@ -368,8 +396,9 @@ wc_modes_fprint(FILE * out, const wc_modes_t M, int json, int witness)
 
 int
 wc_certificate_fprint(FILE * out, const wc_certificate_t C,
-                      const wc_problem_t P, int json)
+                      const wc_problem_t P, const wc_print_opts * o)
 {
+    int json = _wc_print_json(o);
     slong m = fmpz_mat_nrows(C->rows), i;
 
     if (!json)
@@ -425,14 +454,14 @@ wc_certificate_fprint(FILE * out, const wc_certificate_t C,
         _wc_fprint_zvec(out, C->mult, m, 1);
     }
     fputs(", \"problem\": {\"com\": ", out);
-    wc_fprint_qvec(out, P->com, 2, 1);
+    wc_fprint_qvec(out, P->com, 2, o);
     fputs(", \"fixels\": [", out);
     for (i = 0; i < P->n; i++)
     {
         fputs(i ? ", {\"point\": " : "{\"point\": ", out);
-        wc_fprint_qvec(out, P->fixels[i].point, 2, 1);
+        wc_fprint_qvec(out, P->fixels[i].point, 2, o);
         fputs(", \"normal\": ", out);
-        wc_fprint_qvec(out, P->fixels[i].normal, 2, 1);
+        wc_fprint_qvec(out, P->fixels[i].normal, 2, o);
         fprintf(out, ", \"state\": \"%s\"}",
                 P->fixels[i].state == WC_NEAR ? "near" : "touching");
     }

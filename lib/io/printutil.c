@@ -39,19 +39,41 @@ wc_fprint_fmpq(FILE * out, const fmpq_t x)
     flint_free(s);
 }
 
-/* The thread's --decimals; < 0 none.  */
-static _Thread_local int print_decimals = -1;
+const wc_print_opts _wc_print_as_json[1] = {
+    { WC_FORMAT_JSON, 0, 0, NULL }
+};
 
-void
-wc_print_set_decimals(int K)
+int
+_wc_print_json(const wc_print_opts * o)
 {
-    print_decimals = K < 0 ? -1 : K > WC_DECIMALS_MAX ? WC_DECIMALS_MAX : K;
+    return o != NULL && o->format == WC_FORMAT_JSON;
 }
 
 int
-wc_print_decimals(void)
+_wc_print_decimals(const wc_print_opts * o)
 {
-    return print_decimals;
+    if (o == NULL || !o->approx)
+        return -1;
+    return o->decimals < 0 ? 0 : o->decimals > WC_DECIMALS_MAX
+        ? WC_DECIMALS_MAX : o->decimals;
+}
+
+const char *
+_wc_print_indent(const wc_print_opts * o)
+{
+    return o != NULL && o->indent != NULL ? o->indent : "";
+}
+
+wc_print_opts
+_wc_print_indented(const wc_print_opts * o, const char * indent)
+{
+    wc_print_opts t = { WC_FORMAT_TEXT, 0, 0, NULL };
+
+    if (o != NULL)
+        t = *o;
+    t.format = WC_FORMAT_TEXT;
+    t.indent = indent;
+    return t;
 }
 
 void
@@ -90,13 +112,15 @@ wc_fprint_fmpq_decimal(FILE * out, const fmpq_t x, int K)
 }
 
 void
-wc_fprint_fmpq_text(FILE * out, const fmpq_t x)
+wc_fprint_fmpq_text(FILE * out, const fmpq_t x, const wc_print_opts * o)
 {
+    int K = _wc_print_decimals(o);
+
     wc_fprint_fmpq(out, x);
-    if (print_decimals >= 0 && !fmpz_is_one(fmpq_denref(x)))
+    if (K >= 0 && !fmpz_is_one(fmpq_denref(x)))
     {
         fputs(" (approx. ", out);
-        wc_fprint_fmpq_decimal(out, x, print_decimals);
+        wc_fprint_fmpq_decimal(out, x, K);
         putc(')', out);
     }
 }
@@ -110,8 +134,10 @@ _wc_fprint_jq(FILE * out, const fmpq_t x)
 }
 
 void
-wc_fprint_qvec(FILE * out, const fmpq * v, slong len, int json)
+wc_fprint_qvec(FILE * out, const fmpq * v, slong len,
+               const wc_print_opts * o)
 {
+    int json = _wc_print_json(o), K = json ? -1 : _wc_print_decimals(o);
     slong j;
 
     putc(json ? '[' : '(', out);
@@ -125,17 +151,17 @@ wc_fprint_qvec(FILE * out, const fmpq * v, slong len, int json)
             wc_fprint_fmpq(out, v + j);
     }
     putc(json ? ']' : ')', out);
-    for (j = 0; !json && print_decimals >= 0 && j < len; j++)
+    for (j = 0; K >= 0 && j < len; j++)
         if (!fmpz_is_one(fmpq_denref(v + j)))
             break;
-    if (!json && print_decimals >= 0 && j < len)
+    if (K >= 0 && j < len)
     {
         fputs(" (approx. (", out);
         for (j = 0; j < len; j++)
         {
             if (j)
                 fputs(", ", out);
-            wc_fprint_fmpq_decimal(out, v + j, print_decimals);
+            wc_fprint_fmpq_decimal(out, v + j, K);
         }
         fputs("))", out);
     }

@@ -43,7 +43,7 @@ put_faces(FILE * out, _wc_stabcert * C, wc_error_t err)
             if (S->moving_rot[y] != 0)
                 fprintf(out, ", \"rotation\": %d", S->moving_rot[y]);
             fputs(",\n   \"cone\": ", out);
-            wc_cone_fprint_json(out, S->moving + y);
+            wc_cone_fprint(out, S->moving + y, _wc_print_as_json);
             _wc_fprint_cone_proof(out, &cp, n);
             putc('}', out);
         }
@@ -106,7 +106,7 @@ wc_stability_certificate_fprint(FILE * out, const wc_problem_t P,
           " \"problem\": ", out);
     _wc_fprint_dyn_problem(out, P);
     fputs(",\n \"strong\": ", out);
-    wc_set_fprint_json(out, S->strong);
+    wc_set_fprint(out, S->strong, _wc_print_as_json);
     _wc_fprint_planes(out, &T);
     status = put_faces(out, &C, err);
     if (status == WC_OK)

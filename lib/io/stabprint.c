@@ -14,7 +14,7 @@
 
 /* The forces of a solution in words: only the loaded fixels.  */
 static void
-text_forces(FILE * out, const fmpq * c, slong n)
+text_forces(FILE * out, const fmpq * c, slong n, const wc_print_opts * o)
 {
     slong i;
     int any = 0;
@@ -23,9 +23,9 @@ text_forces(FILE * out, const fmpq * c, slong n)
         if (!fmpq_is_zero(c + i) || !fmpq_is_zero(c + n + i))
         {
             fprintf(out, "%sfixel %ld (", any ? ", " : "", (long) i + 1);
-            wc_fprint_fmpq_text(out, c + i);
+            wc_fprint_fmpq_text(out, c + i, o);
             fputs(", ", out);
-            wc_fprint_fmpq_text(out, c + n + i);
+            wc_fprint_fmpq_text(out, c + n + i, o);
             putc(')', out);
             any = 1;
         }
@@ -34,14 +34,15 @@ text_forces(FILE * out, const fmpq * c, slong n)
 }
 
 int
-wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
+wc_classify_fprint(FILE * out, const wc_classify_t R,
+                   const wc_print_opts * o)
 {
     slong i, n = R->n;
 
-    if (json)
+    if (_wc_print_json(o))
     {
         fputs(WC_JSON_OPEN "\"wrench\": ", out);
-        wc_fprint_qvec(out, R->g, 3, 1);
+        wc_fprint_qvec(out, R->g, 3, o);
         fputs(", \"modes\": [", out);
         for (i = 0; i < R->nmodes; i++)
         {
@@ -59,30 +60,30 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
             fputs(i ? ", {\"sign\": " : "{\"sign\": ", out);
             wc_fprint_json_string(out, R->motions[i].sign);
             fputs(", \"nudot\": ", out);
-            wc_fprint_qvec(out, R->motions[i].nudot, 3, 1);
+            wc_fprint_qvec(out, R->motions[i].nudot, 3, o);
             fputs(", \"c\": ", out);
-            wc_fprint_qvec(out, R->motions[i].c, 2 * n, 1);
+            wc_fprint_qvec(out, R->motions[i].c, 2 * n, o);
             putc('}', out);
         }
         fputs("]", out);
         if (R->weak)
         {
             fputs(", \"static_c\": ", out);
-            wc_fprint_qvec(out, R->weak_c, 2 * n, 1);
+            wc_fprint_qvec(out, R->weak_c, 2 * n, o);
         }
         else
         {
             fputs(", \"separator\": ", out);
-            wc_fprint_qvec(out, R->weak_sep, 3, 1);
+            wc_fprint_qvec(out, R->weak_sep, 3, o);
         }
         if (!R->strong_paper)
         {
             fputs(", \"paper_witness\": {\"mode\": ", out);
             wc_fprint_json_string(out, R->paper.sign);
             fputs(", \"nudot\": ", out);
-            wc_fprint_qvec(out, R->paper.nudot, 3, 1);
+            wc_fprint_qvec(out, R->paper.nudot, 3, o);
             fputs(", \"c\": ", out);
-            wc_fprint_qvec(out, R->paper.c, 2 * n, 1);
+            wc_fprint_qvec(out, R->paper.c, 2 * n, o);
             putc('}', out);
         }
         fputs("}\n", out);
@@ -90,20 +91,20 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
     }
 
     fputs("wrench g = ", out);
-    wc_fprint_qvec(out, R->g, 3, 0);
+    wc_fprint_qvec(out, R->g, 3, o);
     fputs("  (fx, fy, torque)\n", out);
     fprintf(out, "weakly stable: %s\n", _wc_yes(R->weak));
     if (R->weak)
     {
         fputs("  static forces (c_n, c_t): ", out);
-        text_forces(out, R->weak_c, n);
+        text_forces(out, R->weak_c, n, o);
         fputs("\n", out);
     }
     else
     {
         fputs("  separator y: y . g > 0, y . (-J c) <= 0 for every admissible"
               " force: y = ", out);
-        wc_fprint_qvec(out, R->weak_sep, 3, 0);
+        wc_fprint_qvec(out, R->weak_sep, 3, o);
         putc('\n', out);
     }
     fprintf(out, "strongly stable (exact semantics, Pang and Trinkle): %s\n",
@@ -122,9 +123,9 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
     if (!R->strong_paper)
     {
         fprintf(out, "  W(%s) holds the wrench: nudot = ", R->paper.sign);
-        wc_fprint_qvec(out, R->paper.nudot, 3, 0);
+        wc_fprint_qvec(out, R->paper.nudot, 3, o);
         fputs(", forces ", out);
-        text_forces(out, R->paper.c, n);
+        text_forces(out, R->paper.c, n, o);
         putc('\n', out);
     }
     if (R->strong != R->strong_paper)
@@ -146,16 +147,16 @@ wc_classify_fprint(FILE * out, const wc_classify_t R, int json)
     for (i = 0; i < R->nmotions; i++)
     {
         fprintf(out, "  %s  nudot = ", R->motions[i].sign);
-        wc_fprint_qvec(out, R->motions[i].nudot, 3, 0);
+        wc_fprint_qvec(out, R->motions[i].nudot, 3, o);
         fputs("  forces ", out);
-        text_forces(out, R->motions[i].c, n);
+        text_forces(out, R->motions[i].c, n, o);
         putc('\n', out);
     }
     return _wc_fprint_done(out);
 }
 
-int
-wc_set_fprint_json(FILE * out, const wc_set_t S)
+static int
+set_json(FILE * out, const wc_set_t S)
 {
     slong i;
 
@@ -165,18 +166,22 @@ wc_set_fprint_json(FILE * out, const wc_set_t S)
     {
         if (i)
             fputs(", ", out);
-        wc_cone_fprint_json(out, S->pieces + i);
+        wc_cone_fprint(out, S->pieces + i, _wc_print_as_json);
     }
     fputs("]}", out);
     return _wc_fprint_done(out);
 }
 
-int
-wc_set_fprint_text(FILE * out, const wc_set_t S, const char * indent)
+static int
+set_text(FILE * out, const wc_set_t S, const wc_print_opts * o)
 {
+    const char * indent = _wc_print_indent(o);
     slong i;
     char * in2 = malloc(strlen(indent) + 5);
+    wc_print_opts t = _wc_print_indented(o, in2);
 
+    if (in2 == NULL)
+        return WC_EINTERNAL;
     strcpy(in2, indent);
     strcat(in2, "    ");
     if (S->empty)
@@ -188,20 +193,23 @@ wc_set_fprint_text(FILE * out, const wc_set_t S, const char * indent)
     for (i = 0; i < S->npieces; i++)
     {
         fprintf(out, "%s  piece %ld:\n", indent, (long) i + 1);
-        wc_cone_fprint_text(out, S->pieces + i, in2);
+        wc_cone_fprint(out, S->pieces + i, &t);
     }
     free(in2);
     return _wc_fprint_done(out);
 }
 
-static int push_fprint(FILE * out, const wc_push_t R,
-                       const wc_problem_struct * P, int json,
-                       const char * indent);
+int
+wc_set_fprint(FILE * out, const wc_set_t S, const wc_print_opts * o)
+{
+    return _wc_print_json(o) ? set_json(out, S) : set_text(out, S, o);
+}
 
 /* The point of edge k of P's polygon at parameter s, as text:
    v_k + s (v_k+1 - v_k).  */
 static void
-edge_point(FILE * out, const wc_problem_t P, slong k, const fmpq_t s)
+edge_point(FILE * out, const wc_problem_t P, slong k, const fmpq_t s,
+           const wc_print_opts * o)
 {
     slong nv = P->shape_len / 2, j;
     const fmpq * a = P->shape_data + 2 * (k % nv);
@@ -215,32 +223,21 @@ edge_point(FILE * out, const wc_problem_t P, slong k, const fmpq_t s)
         fmpq_mul(q + j, q + j, s);
         fmpq_add(q + j, q + j, a + j);
     }
-    wc_fprint_qvec(out, q, 2, 0);
+    wc_fprint_qvec(out, q, 2, o);
     for (j = 0; j < 2; j++)
         fmpq_clear(q + j);
 }
 
 int
-wc_push_fprint(FILE * out, const wc_push_t R, int json, const char * indent)
+wc_push_fprint(FILE * out, const wc_push_t R, const wc_problem_t P,
+               const wc_print_opts * o)
 {
-    return json ? push_fprint(out, R, NULL, 1, indent)
-        : push_fprint(out, R, NULL, 0, indent);
-}
+    int json = _wc_print_json(o);
+    const char * indent = _wc_print_indent(o);
+    slong i;
 
-int
-wc_push_fprint_text(FILE * out, const wc_push_t R, const wc_problem_t P,
-                    const char * indent)
-{
     if (P != NULL && (P->shape != WC_SHAPE_POLYGON || P->shape_len < 6))
         P = NULL;
-    return push_fprint(out, R, P, 0, indent);
-}
-
-static int
-push_fprint(FILE * out, const wc_push_t R, const wc_problem_struct * P,
-            int json, const char * indent)
-{
-    slong i;
 
     if (json)
         putc('[', out);
@@ -280,16 +277,16 @@ push_fprint(FILE * out, const wc_push_t R, const wc_problem_struct * P,
         {
             fprintf(out, "%sedge %ld: s in %c", indent, (long) v->edge,
                     v->from_closed ? '[' : '(');
-            wc_fprint_fmpq_text(out, v->from);
+            wc_fprint_fmpq_text(out, v->from, o);
             fputs(", ", out);
-            wc_fprint_fmpq_text(out, v->to);
+            wc_fprint_fmpq_text(out, v->to, o);
             fprintf(out, "%c", v->to_closed ? ']' : ')');
             if (P != NULL)
             {
                 fputs(", (x, y) from ", out);
-                edge_point(out, P, v->edge, v->from);
+                edge_point(out, P, v->edge, v->from, o);
                 fputs(" to ", out);
-                edge_point(out, P, v->edge, v->to);
+                edge_point(out, P, v->edge, v->to, o);
             }
             putc('\n', out);
         }
@@ -310,59 +307,56 @@ push_fprint(FILE * out, const wc_push_t R, const wc_problem_struct * P,
     return _wc_fprint_done(out);
 }
 
-int
-wc_stability_fprint(FILE * out, const wc_stability_t S, int json)
+void
+_wc_stability_fprint_members(FILE * out, const wc_stability_t S)
 {
-    if (!json)
-        return wc_stability_fprint_text(out, S, NULL);
-    else
+    const wc_print_opts * o = _wc_print_as_json;
+
+    fputs("\"weak\": ", out);
+    wc_cone_fprint(out, S->weak, o);
+    fputs(", \"strong\": ", out);
+    wc_set_fprint(out, S->strong, o);
+    fputs(", \"strong_paper\": ", out);
+    wc_set_fprint(out, S->strong_paper, o);
+    fprintf(out, ", \"paper_in_weak\": %s, \"paper_vacuous\": %s, "
+            "\"semantics_differ\": %s, \"differ_only_at_origin\": %s",
+            _wc_tf(S->paper_in_weak), _wc_tf(S->paper_vacuous),
+            _wc_tf(S->differ), _wc_tf(S->diff_origin_only));
+    if (S->differ)
     {
-        fputs(WC_JSON_OPEN "\"weak\": ", out);
-        wc_cone_fprint_json(out, S->weak);
+        fputs(", \"difference_witness\": {\"wrench\": ", out);
+        wc_fprint_qvec(out, S->diff_g, 3, o);
+        fprintf(out, ", \"strong\": %s, \"strong_paper\": %s}",
+                _wc_tf(S->diff_in_exact), _wc_tf(!S->diff_in_exact));
+    }
+    if (S->has_push)
+    {
+        fputs(", \"push\": {\"weak\": ", out);
+        wc_push_fprint(out, S->push_weak, NULL, o);
         fputs(", \"strong\": ", out);
-        wc_set_fprint_json(out, S->strong);
+        wc_push_fprint(out, S->push_strong, NULL, o);
         fputs(", \"strong_paper\": ", out);
-        wc_set_fprint_json(out, S->strong_paper);
-        fprintf(out, ", \"paper_in_weak\": %s, \"paper_vacuous\": %s, "
-                "\"semantics_differ\": %s, \"differ_only_at_origin\": %s",
-                _wc_tf(S->paper_in_weak), _wc_tf(S->paper_vacuous),
-                _wc_tf(S->differ), _wc_tf(S->diff_origin_only));
-        if (S->differ)
-        {
-            fputs(", \"difference_witness\": {\"wrench\": ", out);
-            wc_fprint_qvec(out, S->diff_g, 3, 1);
-            fprintf(out, ", \"strong\": %s, \"strong_paper\": %s}",
-                    _wc_tf(S->diff_in_exact), _wc_tf(!S->diff_in_exact));
-        }
-        if (S->has_push)
-        {
-            fputs(", \"push\": {\"weak\": ", out);
-            wc_push_fprint(out, S->push_weak, 1, "");
-            fputs(", \"strong\": ", out);
-            wc_push_fprint(out, S->push_strong, 1, "");
-            fputs(", \"strong_paper\": ", out);
-            wc_push_fprint(out, S->push_strong_paper, 1, "");
-            putc('}', out);
-        }
-        if (json == 1)
-            fputs("}\n", out);
-        return _wc_fprint_done(out);
+        wc_push_fprint(out, S->push_strong_paper, NULL, o);
+        putc('}', out);
     }
 }
 
-int
-wc_stability_fprint_text(FILE * out, const wc_stability_t S,
-                         const wc_problem_t P)
+static int
+stability_text(FILE * out, const wc_stability_t S, const wc_problem_t P,
+               const wc_print_opts * o)
 {
+    wc_print_opts in2 = _wc_print_indented(o, "  ");
+    wc_print_opts in4 = _wc_print_indented(o, "    ");
+
     fputs("weakly stable wrenches (a static solution exists; closed):\n",
           out);
-    wc_cone_fprint_text(out, S->weak, "  ");
+    wc_cone_fprint(out, S->weak, &in2);
     fputs("strongly stable wrenches, exact semantics (weakly stable, no "
           "solution moves):\n", out);
-    wc_set_fprint_text(out, S->strong, "  ");
+    wc_set_fprint(out, S->strong, &in2);
     fputs("strongly stable wrenches, paper semantics (eq. 19: in no W(x), "
           "x != n..n):\n", out);
-    wc_set_fprint_text(out, S->strong_paper, "  ");
+    wc_set_fprint(out, S->strong_paper, &in2);
     if (S->paper_vacuous)
         fputs("note: no fixel touches, so eq. 19 is vacuous (its union of "
               "cones is empty):\n  its set is all of R^3 and says nothing "
@@ -375,7 +369,7 @@ wc_stability_fprint_text(FILE * out, const wc_stability_t S,
     else if (S->differ)
     {
         fputs("the semantics differ: e.g. g = ", out);
-        wc_fprint_qvec(out, S->diff_g, 3, 0);
+        wc_fprint_qvec(out, S->diff_g, 3, o);
         fprintf(out, " is strongly stable under %s only%s\n",
                 S->diff_in_exact ? "the definition (exact)"
                 : "eq. 19 (paper)",
@@ -392,12 +386,24 @@ wc_stability_fprint_text(FILE * out, const wc_stability_t S,
     {
         fputs("pushing regions of a frictionless finger:\n  weakly stable:\n",
               out);
-        wc_push_fprint_text(out, S->push_weak, P, "    ");
+        wc_push_fprint(out, S->push_weak, P, &in4);
         fputs("  strongly stable (exact):\n", out);
-        wc_push_fprint_text(out, S->push_strong, P, "    ");
+        wc_push_fprint(out, S->push_strong, P, &in4);
         fputs("  strongly stable (paper):\n", out);
-        wc_push_fprint_text(out, S->push_strong_paper, P, "    ");
+        wc_push_fprint(out, S->push_strong_paper, P, &in4);
     }
+    return _wc_fprint_done(out);
+}
+
+int
+wc_stability_fprint(FILE * out, const wc_stability_t S, const wc_problem_t P,
+                    const wc_print_opts * o)
+{
+    if (!_wc_print_json(o))
+        return stability_text(out, S, P, o);
+    fputs(WC_JSON_OPEN, out);
+    _wc_stability_fprint_members(out, S);
+    fputs("}\n", out);
     return _wc_fprint_done(out);
 }
 
@@ -413,7 +419,7 @@ _wc_fprint_dyn_problem(FILE * out, const wc_problem_t P)
     fputs(", \"inertia\": ", out);
     _wc_fprint_jq(out, P->inertia);
     fputs(", \"com\": ", out);
-    wc_fprint_qvec(out, P->com, 2, 1);
+    wc_fprint_qvec(out, P->com, 2, _wc_print_as_json);
     fputs(",\n  \"fixels\": [", out);
     for (i = 0; i < P->n; i++)
     {
@@ -421,9 +427,9 @@ _wc_fprint_dyn_problem(FILE * out, const wc_problem_t P)
 
         fputs(i > 0 ? ",\n   " : "\n   ", out);
         fputs("{\"point\": ", out);
-        wc_fprint_qvec(out, f->point, 2, 1);
+        wc_fprint_qvec(out, f->point, 2, _wc_print_as_json);
         fputs(", \"normal\": ", out);
-        wc_fprint_qvec(out, f->normal, 2, 1);
+        wc_fprint_qvec(out, f->normal, 2, _wc_print_as_json);
         fprintf(out, ", \"state\": \"%s\", \"mu_s\": ",
                 f->state == WC_TOUCHING ? "touching" : "near");
         _wc_fprint_jq(out, f->mu_s);
@@ -444,18 +450,18 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
     fputs("{\"kind\": \"" WC_CERT_KIND_STABILITY "\",\n \"problem\": ", out);
     _wc_fprint_dyn_problem(out, P);
     fputs(",\n \"wrench\": ", out);
-    wc_fprint_qvec(out, R->g, 3, 1);
+    wc_fprint_qvec(out, R->g, 3, _wc_print_as_json);
     fprintf(out, ",\n \"weakly_stable\": %s,\n \"weak\": ",
             R->weak ? "true" : "false");
     if (R->weak)
     {
         fputs("{\"c\": ", out);
-        wc_fprint_qvec(out, R->weak_c, 2 * R->n, 1);
+        wc_fprint_qvec(out, R->weak_c, 2 * R->n, _wc_print_as_json);
     }
     else
     {
         fputs("{\"separator\": ", out);
-        wc_fprint_qvec(out, R->weak_sep, 3, 1);
+        wc_fprint_qvec(out, R->weak_sep, 3, _wc_print_as_json);
     }
     fprintf(out, "},\n \"strongly_stable\": %s", R->strong ? "true" : "false");
     if (R->weak && !R->strong)
@@ -465,9 +471,9 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
         fputs(",\n \"motion\": {\"sign\": ", out);
         wc_fprint_json_string(out, a->sign);
         fputs(", \"nudot\": ", out);
-        wc_fprint_qvec(out, a->nudot, 3, 1);
+        wc_fprint_qvec(out, a->nudot, 3, _wc_print_as_json);
         fputs(", \"c\": ", out);
-        wc_fprint_qvec(out, a->c, 2 * R->n, 1);
+        wc_fprint_qvec(out, a->c, 2 * R->n, _wc_print_as_json);
         fputc('}', out);
     }
     if (R->strong)
@@ -483,7 +489,7 @@ wc_classify_certificate_fprint(FILE * out, const wc_problem_t P,
             if (f->rotation != 0)
                 fprintf(out, ", \"rotation\": %d", f->rotation);
             fputs(", \"multipliers\": ", out);
-            wc_fprint_qvec(out, f->mult, f->nmult, 1);
+            wc_fprint_qvec(out, f->mult, f->nmult, _wc_print_as_json);
             fputc('}', out);
         }
         fputc(']', out);

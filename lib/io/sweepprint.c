@@ -7,10 +7,11 @@
 #include <config.h>
 
 #include "io/print.h"
+#include "io/printutil.h"
 #include "core/version.h"
 
 static void
-critical_json(FILE * out, const wc_sweep_t A)
+critical_json(FILE * out, const wc_sweep_t A, const wc_print_opts * o)
 {
     const wc_critical_struct * C = A->C;
     const wc_plan_struct * H = A->H;
@@ -34,7 +35,7 @@ critical_json(FILE * out, const wc_sweep_t A)
     if (C->empty_at_zero)
         fputs("null", out);
     else
-        wc_fprint_qvec(out, C->lo_witness, 3, 1);
+        wc_fprint_qvec(out, C->lo_witness, 3, o);
     fputs(", \"hi_cover\": [", out);
     for (k = 0, m = 0; C->found && k < H->T->nneeded; k++)
         if (H->exact_needed[k])
@@ -44,7 +45,7 @@ critical_json(FILE * out, const wc_sweep_t A)
 }
 
 static void
-critical_text(FILE * out, const wc_sweep_t A)
+critical_text(FILE * out, const wc_sweep_t A, const wc_print_opts * o)
 {
     const wc_critical_struct * C = A->C;
     const wc_plan_struct * H = A->H;
@@ -57,20 +58,20 @@ critical_text(FILE * out, const wc_sweep_t A)
     else
     {
         fputs("  lo = ", out);
-        wc_fprint_fmpq_text(out, C->lo);
+        wc_fprint_fmpq_text(out, C->lo, o);
         fputs(": G_goal is not empty; g = ", out);
-        wc_fprint_qvec(out, C->lo_witness, 3, 0);
+        wc_fprint_qvec(out, C->lo_witness, 3, o);
         fputs(" is in the cone of no needed string\n", out);
     }
     if (!C->found)
     {
         fputs("  G_goal is not empty at any mu <= ", out);
-        wc_fprint_fmpq_text(out, A->max);
+        wc_fprint_fmpq_text(out, A->max, o);
         fprintf(out, " (%ld plans)\n", (long) C->evals);
         return;
     }
     fputs("  hi = ", out);
-    wc_fprint_fmpq_text(out, C->hi);
+    wc_fprint_fmpq_text(out, C->hi, o);
     fputs(": G_goal is empty; the cones of", out);
     for (k = 0; k < H->T->nneeded; k++)
         if (H->exact_needed[k])
@@ -83,16 +84,17 @@ critical_text(FILE * out, const wc_sweep_t A)
         fmpq_init(w);
         fmpq_sub(w, C->hi, C->lo);
         fputs("  hi - lo = ", out);
-        wc_fprint_fmpq_text(out, w);
+        wc_fprint_fmpq_text(out, w, o);
         fputs(" <= ", out);
-        wc_fprint_fmpq_text(out, A->width);
+        wc_fprint_fmpq_text(out, A->width, o);
         fprintf(out, " (%ld plans)\n", (long) C->evals);
         fmpq_clear(w);
     }
 }
 
-int
-wc_sweep_fprint_json(FILE * out, const wc_sweep_t A, const wc_problem_t P)
+static int
+sweep_json(FILE * out, const wc_sweep_t A, const wc_problem_t P,
+           const wc_print_opts * o)
 {
     slong i;
 
@@ -101,27 +103,36 @@ wc_sweep_fprint_json(FILE * out, const wc_sweep_t A, const wc_problem_t P)
     {
         if (i)
             fputs(", ", out);
-        wc_plan_sweep_fprint(out, A->plans + i, P, A->mu + i, 1);
+        wc_plan_sweep_fprint(out, A->plans + i, P, A->mu + i, o);
     }
     fputs(A->critical ? "], " : "]", out);
     if (A->critical)
-        critical_json(out, A);
+        critical_json(out, A, o);
     fputs("}\n", out);
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
+    return _wc_fprint_done(out);
 }
 
-int
-wc_sweep_fprint_text(FILE * out, const wc_sweep_t A, const wc_problem_t P)
+static int
+sweep_text(FILE * out, const wc_sweep_t A, const wc_problem_t P,
+           const wc_print_opts * o)
 {
     slong i;
 
     for (i = 0; i < A->n; i++)
-        wc_plan_sweep_fprint(out, A->plans + i, P, A->mu + i, 0);
+        wc_plan_sweep_fprint(out, A->plans + i, P, A->mu + i, o);
     if (A->critical)
     {
         if (A->n > 0)
             putc('\n', out);
-        critical_text(out, A);
+        critical_text(out, A, o);
     }
-    return ferror(out) ? WC_EINTERNAL : WC_OK;
+    return _wc_fprint_done(out);
+}
+
+int
+wc_sweep_fprint(FILE * out, const wc_sweep_t A, const wc_problem_t P,
+                const wc_print_opts * o)
+{
+    return _wc_print_json(o) ? sweep_json(out, A, P, o)
+        : sweep_text(out, A, P, o);
 }

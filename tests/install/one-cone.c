@@ -27,7 +27,11 @@ main(void)
     if (status == WC_OK)
         status = wc_wrench_cone(W, NULL, P, "na", WC_METHOD_DIRECT, err);
     if (status == WC_OK)
-        status = wc_cone_fprint_text(stdout, W, "  ");
+    {
+        wc_print_opts text = { WC_FORMAT_TEXT, 0, 0, "  " };
+
+        status = wc_cone_fprint(stdout, W, &text);
+    }
     else
         fprintf(stderr, "one-cone: %s\n", err->message);
     wc_error_clear(err);
