@@ -7,7 +7,9 @@
 
    Include this header; it includes the others.  The library never prints
    on its own and never exits: functions return a wc_status and fill a
-   caller-supplied wc_error_t.  It is not thread-safe (cddlib is not).  */
+   caller-supplied wc_error_t.  It holds no mutable global state: several
+   threads may call it at once on their own objects (its calls into
+   cddlib, which is not thread-safe, take a lock of their own).  */
 
 #ifndef WRENCHCONE_H
 #define WRENCHCONE_H
