@@ -123,6 +123,7 @@ SH_TESTS = \
 	tests/cli-compare.sh \
 	tests/dist-files.sh \
 	tests/cli-errors.sh \
+	tests/cli-infiles.sh \
 	tests/corpus.sh \
 	tests/completion.sh \
 	tests/man-examples.sh \
