@@ -95,16 +95,9 @@ int
 cli_read_all(char ** text, size_t * len, const char * path, size_t max,
              wc_error_t err)
 {
-    FILE * f = strcmp(path, "-") == 0 ? stdin : fopen(path, "rb");
-    int status;
-
-    if (f == NULL)
-        return wc_error_set(err, WC_EINPUT, path, 0, 0, "cannot open: %s",
-                            strerror(errno));
-    status = _wc_read_all(text, len, f, cli_input_name(path), max, err);
-    if (f != stdin)
-        fclose(f);
-    return status;
+    if (strcmp(path, "-") == 0)
+        return _wc_read_all(text, len, stdin, cli_input_name(path), max, err);
+    return _wc_read_file(text, len, path, path, max, 0, NULL, err);
 }
 
 int

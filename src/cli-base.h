@@ -20,8 +20,10 @@
 const char * cli_input_name(const char * path);
 
 /* The whole of path ("-": stdin) into a malloc'd *text of *len bytes, at
-   most max; a file that cannot be opened, a directory or a file too large
-   is WC_EINPUT, any other read failure WC_EINTERNAL, located at path.  */
+   most max, read as the command line reads (core/readall.h: a FIFO or a
+   device too); a file that cannot be opened, a directory or a file too
+   large is WC_EINPUT, any other read failure WC_EINTERNAL, located at
+   path.  */
 int cli_read_all(char ** text, size_t * len, const char * path, size_t max,
                  wc_error_t err);
 

@@ -1,6 +1,5 @@
-/* cli-output.c -- writing a whole output file: figures and reports are
-   written to a temporary file beside their destination and renamed at
-   the end, so that no partial file is ever left; and -o FILE.
+/* cli-output.c -- -o FILE of draw and report, read as --output=FILE
+   (cli-file.c writes the file).
 
    Copyright (C) 2026 the wrenchcone authors.
    This file is part of wrenchcone, free software under the GNU General
@@ -15,55 +14,6 @@
 #include <unistd.h>
 
 #include "cli.h"
-
-int
-cli_write_whole(const char * path, const char * what,
-                int (*put)(FILE *, const void *), const void * data)
-{
-    size_t len = strlen(path);
-    char * tmp = malloc(len + 16);
-    FILE * f = NULL;
-    int fd = -1, bad = 1, saved = 0;
-    mode_t mask;
-
-    if (tmp == NULL)
-    {
-        fputs(PROG ": out of memory\n", stderr);
-        return WC_EINTERNAL;
-    }
-    snprintf(tmp, len + 16, "%s.tmp-XXXXXX", path);
-    mask = umask(0);            /* mkstemp makes 0600; the file is for */
-    umask(mask);                /* everyone, as one that fopen makes */
-    if ((fd = mkstemp(tmp)) >= 0 && fchmod(fd, 0666 & ~mask) == 0
-        && (f = fdopen(fd, "w")) != NULL)
-    {
-        bad = put(f, data) != WC_OK;
-        saved = errno;
-        bad |= fclose(f) != 0;
-        if (!bad && rename(tmp, path) != 0)
-            bad = 1;
-        saved = errno;
-        if (bad)
-            remove(tmp);
-    }
-    else
-    {
-        saved = errno;
-        if (fd >= 0)
-        {
-            close(fd);
-            remove(tmp);
-        }
-    }
-    free(tmp);
-    if (bad)
-    {
-        fprintf(stderr, PROG ": %s: cannot write the %s: %s\n", path, what,
-                strerror(saved ? saved : EIO));
-        return WC_EINTERNAL;
-    }
-    return WC_OK;
-}
 
 char **
 cli_expand_output(int argc, char ** argv, char *** owned, int * nowned)

@@ -50,7 +50,7 @@ cli_answer(_wc_request * R)
 {
     _wc_answer A;
     wc_error_t err;
-    int status;
+    int status, reported = 0;
 
     R->certificates = R->certificate != NULL;
     _wc_answer_init(&A, R);
@@ -60,23 +60,20 @@ cli_answer(_wc_request * R)
     {
         cert_job j = { &A, err };
 
-        status = cli_write_certificate(R->certificate, put_certificate, &j);
-        if (status != WC_OK && err->message == NULL)
-            status = -status;       /* reported already */
+        status = cli_write_file(R->certificate, "certificate",
+                                put_certificate, &j, err);
     }
-    if (status > 0)
-        cli_report(err, status);
-    else if (status < 0)
-        status = -status;
-    else if (R->output != NULL && strcmp(R->output, "-") != 0)
-        status = cli_write_whole(R->output, R->command == _WC_DRAW ? "figure"
-                                 : _wc_command_name(R->command), put_answer,
-                                 &A);
-    else
+    if (status == WC_OK && R->output != NULL && strcmp(R->output, "-") != 0)
+        status = cli_write_file(R->output, R->command == _WC_DRAW ? "figure"
+                                : _wc_command_name(R->command), put_answer,
+                                &A, err);
+    else if (status == WC_OK)
     {
         _wc_answer_fprint(stdout, &A);
-        status = cli_finish_output();
+        reported = (status = cli_finish_output()) != WC_OK;
     }
+    if (status != WC_OK && !reported)
+        cli_report(err, status);
     if (status == WC_OK)
         status = _wc_answer_status(&A);
     wc_error_clear(err);

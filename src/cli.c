@@ -6,11 +6,9 @@
 
 #include <config.h>
 
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "cli.h"
 
@@ -47,35 +45,3 @@ cli_usage_error(const char * cmd, const char * fmt, const char * arg)
             cmd ? " " : "", cmd ? cmd : "");
     return WC_EUSAGE;
 }
-
-/* Only a file this run created is ever removed -- never a device or
-   someone's file.  */
-int
-cli_write_certificate(const char * path, int (*put)(FILE *, const void *),
-                      const void * data)
-{
-    struct stat st;
-    int existed = stat(path, &st) == 0;
-    FILE * f = fopen(path, "w");
-    int bad = f == NULL;
-
-    if (f != NULL)
-    {
-        int st = put(f, data), wbad = ferror(f);
-
-        wbad |= fclose(f) != 0;
-        bad = st != WC_OK || wbad;
-        if (bad && !existed)
-            remove(path);
-        if (st != WC_OK && !wbad)
-            return st;          /* not a write error: the caller says why */
-    }
-    if (bad)
-    {
-        fprintf(stderr, PROG ": %s: cannot write the certificate: %s\n",
-                path, strerror(errno));
-        return WC_EINTERNAL;
-    }
-    return WC_OK;
-}
-

@@ -66,22 +66,23 @@ void cli_progress_clear(void);
    aborts or prints on stdout (cli-memory.c).  */
 void cli_install_memory_handlers(void);
 
-/* Write a certificate file with put(f, data); never leaves a partial file
-   this run created.  A write error is reported here (exit status
-   WC_EINTERNAL); any other failure of put is returned for the caller to
-   report.  */
-int cli_write_certificate(const char * path,
-                          int (*put)(FILE *, const void *),
-                          const void * data);
+/* --- cli-file.c: the one writer of output files --- */
 
-/* --- cli-output.c: whole output files, -o FILE --- */
+/* Write path (-o FILE, --certificate=FILE; what names it in messages:
+   "figure", "certificate") with put(f, data): a new path or a regular
+   file through a temporary file beside it renamed at the end (the old
+   file's permissions kept, a read-only one refused), a FIFO, character
+   device or symbolic link written through, anything else refused
+   (cli-file.c says why).  WC_OK; or put's own failure, its error in err;
+   or a failure to write, in err as one located line "PATH: cannot write
+   the WHAT: why" (exit status WC_EINTERNAL).  The caller reports err.
+   Nothing is left behind that this call created, also on SIGHUP, SIGINT
+   or SIGTERM.  */
+int cli_write_file(const char * path, const char * what,
+                   int (*put)(FILE *, const void *), const void * data,
+                   wc_error_t err);
 
-/* Write path with put(f, data) through a temporary file in the same
-   directory, renamed at the end: path is replaced whole or not at all,
-   and nothing is left behind on failure.  A failure is reported here
-   ("cannot write the WHAT") with exit status WC_EINTERNAL.  */
-int cli_write_whole(const char * path, const char * what,
-                    int (*put)(FILE *, const void *), const void * data);
+/* --- cli-output.c: -o FILE --- */
 
 /* argv (argc entries) with -o FILE and -oFILE as --output=FILE: a
    malloc'd, NULL-terminated vector; the new strings are in *owned

@@ -8,12 +8,12 @@
 
 #include <config.h>
 
-#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
 #include "commands.h"
+#include "core/readall.h"
 
 int
 cmd_batch(const cli_command * self, int argc, char ** argv)
@@ -27,14 +27,15 @@ cmd_batch(const cli_command * self, int argc, char ** argv)
     if ((status = cli_parse(&R, self, argc, argv)) >= 0)
         return cli_done(&R, status);
     path = R.batch;
-    f = strcmp(path, "-") == 0 ? stdin : fopen(path, "r");
-    if (f == NULL)
-    {
-        fprintf(stderr, PROG ": %s: cannot open: %s\n", path,
-                strerror(errno));
-        return cli_done(&R, WC_EINPUT);
-    }
     wc_error_init(err);
+    if (strcmp(path, "-") == 0)
+        f = stdin;
+    else if ((status = _wc_open_file(&f, path, path, err)) != WC_OK)
+    {
+        cli_report(err, status);
+        wc_error_clear(err);
+        return cli_done(&R, status);
+    }
     status = wc_batch(&worst, stdout, f, cli_input_name(path), (int) R.jobs,
                       err);
     if (status != WC_OK)

@@ -8,7 +8,7 @@
 bin_PROGRAMS = src/wrenchcone
 src_wrenchcone_SOURCES = src/wrenchcone.c src/commands.h \
 	src/cli.c src/cli-base.c src/cli-options.c src/cli-memory.c \
-	src/cli-progress.c src/cli-output.c src/cli.h src/cli-base.h \
+	src/cli-progress.c src/cli-output.c src/cli-file.c src/cli.h src/cli-base.h \
 	src/cmd-cone.c src/cmd-compare.c src/cmd-batch.c src/cli-request.c
 src_wrenchcone_LDADD = lib/libwc.la
 

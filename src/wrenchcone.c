@@ -14,6 +14,7 @@
 
 #include <config.h>
 
+#include <signal.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -64,6 +65,9 @@ main(int argc, char ** argv)
     int status;
 
     cli_install_memory_handlers();
+    /* A file over the size limit (ulimit -f) is a write error, reported
+       and cleaned up, not a core dump.  */
+    signal(SIGXFSZ, SIG_IGN);
     if (argc < 2)
     {
         _wc_schema_fprint_help(stderr, NULL);

@@ -123,6 +123,8 @@ SH_TESTS = \
 	tests/cli-compare.sh \
 	tests/dist-files.sh \
 	tests/cli-errors.sh \
+	tests/cli-outfiles.sh \
+	tests/cli-infiles.sh \
 	tests/corpus.sh \
 	tests/completion.sh \
 	tests/man-examples.sh \
@@ -150,7 +152,7 @@ AM_TESTS_ENVIRONMENT = \
 EXTRA_DIST += $(SH_TESTS) tests/clitest.sh tests/bad tests/golden \
 	tests/certs tests/lsan.supp \
 	tests/update-golden.py tests/install/one-cone.c tests/cert-tamper.py \
-	tests/png-pixels.py
+	tests/png-pixels.py tests/stall-open.c
 
 # The C tests' names, for running them alone (.ci/run widens them).
 print-c-tests:

@@ -23,6 +23,7 @@
 
 #include "api/batch.h"
 #include "api/request.h"
+#include "api/run.h"
 #include "core/thread.h"
 
 /* A line without its end ("\n", "\r\n"), so that an error at the end of
@@ -56,7 +57,7 @@ read_failed(wc_error_t err, const char * name, int e)
 /* jobs == 1: the calling thread, a line at a time.  */
 static int
 batch_serial(int * worst, FILE * out, FILE * in, const char * name,
-             wc_error_t err)
+             const _wc_file_id * avoid, wc_error_t err)
 {
     char * line = NULL, * ans = NULL;
     size_t cap = 0, len, anslen = 0;
@@ -69,7 +70,8 @@ batch_serial(int * worst, FILE * out, FILE * in, const char * name,
         lineno++;
         if ((len = request_length(line, n)) == 0)
             continue;
-        st = wc_request_json_at(&ans, &anslen, line, len, name, lineno, err);
+        st = _wc_request_json_avoid(&ans, &anslen, line, len, name, lineno,
+                                    avoid, err);
         if (ans == NULL)
         {
             status = WC_EINTERNAL;      /* err says why */
@@ -123,6 +125,7 @@ typedef struct
     int writing;                /* a worker is writing answers */
     FILE * out;
     const char * name;
+    const _wc_file_id * avoid;  /* in's file: no request reads it */
     int worst;
     int status;
     wc_error_struct * err;
@@ -204,8 +207,8 @@ worker(void * arg)
         s = B->slots + B->ntake++ % B->cap;
         pthread_mutex_unlock(&B->lock);
         /* The slot is this worker's until it is marked done.  */
-        st = wc_request_json_at(&ans, &anslen, s->line, s->len, B->name,
-                                s->lineno, err);
+        st = _wc_request_json_avoid(&ans, &anslen, s->line, s->len,
+                                    B->name, s->lineno, B->avoid, err);
         if (ans == NULL)
             why = wc_error_format(err);
         free(s->line);
@@ -271,7 +274,7 @@ read_lines(batch * B, FILE * in)
 
 static int
 batch_threads(int * worst, FILE * out, FILE * in, const char * name,
-              int jobs, wc_error_t err)
+              int jobs, const _wc_file_id * avoid, wc_error_t err)
 {
     batch B;
     pthread_t * tid = NULL;
@@ -282,6 +285,7 @@ batch_threads(int * worst, FILE * out, FILE * in, const char * name,
     B.cap = 4 * (size_t) jobs;
     B.out = out;
     B.name = name;
+    B.avoid = avoid;
     B.worst = *worst;
     B.status = WC_OK;
     B.err = err;
@@ -300,7 +304,7 @@ batch_threads(int * worst, FILE * out, FILE * in, const char * name,
         if (pthread_create(tid + started, NULL, worker, &B) == 0)
             started++;
     if (started == 0)
-        B.status = batch_serial(&B.worst, out, in, name, err);
+        B.status = batch_serial(&B.worst, out, in, name, avoid, err);
     else
     {
         e = read_lines(&B, in);
@@ -329,11 +333,21 @@ int
 wc_batch(int * worst, FILE * out, FILE * in, const char * name, int jobs,
          wc_error_t err)
 {
+    _wc_file_id avoid, outid;
+
     *worst = WC_OK;
     if (jobs < 1 || jobs > WC_BATCH_MAX_JOBS)
         return wc_error_set(err, WC_EUSAGE, NULL, 0, 0, "jobs must be from "
                             "1 to %d, not %d", WC_BATCH_MAX_JOBS, jobs);
     _wc_thread_enter();
-    return jobs == 1 ? batch_serial(worst, out, in, name, err)
-        : batch_threads(worst, out, in, name, jobs, err);
+    /* A request naming the batch's own input (/dev/stdin, its path)
+       would read the requests after it as its problem.  */
+    _wc_file_id_of(&avoid, in);
+    /* `batch F >> F` would answer its own answers without end.  */
+    _wc_file_id_of(&outid, out);
+    if (avoid.regular && _wc_file_id_same(&avoid, &outid))
+        return wc_error_set(err, WC_EINPUT, name, 0, 0, "the batch's input "
+                            "is also its output");
+    return jobs == 1 ? batch_serial(worst, out, in, name, &avoid, err)
+        : batch_threads(worst, out, in, name, jobs, &avoid, err);
 }

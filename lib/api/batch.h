@@ -27,6 +27,10 @@ extern "C" {
    line, the calling thread does, one line at a time, and reads the next
    line only once the answer is written.  The answers are the same bytes
    whatever jobs is; with jobs > 1 up to 4 * jobs lines are read ahead.
+   A request reads regular files only (api/request.h), and never the file
+   in reads (by any name: /dev/stdin, its path), so that every line is
+   answered; in and out may not be the same regular file (WC_EINPUT, and
+   nothing read).
 
    *worst := the largest status of the answers written (WC_OK if none).
    Returns WC_OK when every line was read and answered; else WC_EINTERNAL

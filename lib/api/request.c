@@ -26,6 +26,7 @@ typedef struct
     const char * file;
     long line;          /* the request's first line */
     wc_error_struct * err;
+    const _wc_file_id * avoid;  /* a batch's own input, or NULL */
 }
 where;
 
@@ -141,6 +142,8 @@ get_input(_wc_input * in, const wc_json_node * o, const char * key,
             return bad(w, p, "a request reads no standard input: give "
                        "\"%s\"", key_text);
         in->name = in->path;
+        in->flags = _WC_READ_REGULAR;
+        in->avoid = w->avoid;
         return WC_OK;
     }
     in->name = text_name;
@@ -379,6 +382,15 @@ int
 wc_request_json_at(char ** out, size_t * outlen, const char * request,
                    size_t len, const char * file, long line, wc_error_t err)
 {
+    return _wc_request_json_avoid(out, outlen, request, len, file, line,
+                                  NULL, err);
+}
+
+int
+_wc_request_json_avoid(char ** out, size_t * outlen, const char * request,
+                       size_t len, const char * file, long line,
+                       const _wc_file_id * avoid, wc_error_t err)
+{
     wc_json_t J;
     _wc_request R;
     _wc_answer A;
@@ -392,6 +404,7 @@ wc_request_json_at(char ** out, size_t * outlen, const char * request,
     w.file = file != NULL ? file : "<request>";
     w.line = line >= 1 ? line : 1;
     w.err = err;
+    w.avoid = avoid;
     memset(&R, 0, sizeof R);
     _wc_json_init(J);
     status = _wc_json_parse(J, request, len, w.file, err);

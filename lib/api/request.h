@@ -12,8 +12,9 @@
 
    "command" is cone, modes, feasible, classify, stability, plan or
    compare; the problem is a file ("problem": PATH, read by the library,
-   relative to the working directory) or the text of one ("problem_text":
-   TEXT, named <problem_text> in messages).  The other keys are the
+   relative to the working directory; a regular file only: anything else
+   is refused unread, and never waited for) or the text of one
+   ("problem_text": TEXT, named <problem_text> in messages).  The other keys are the
    command's operands and options:
 
      cone       "mode"; "method": "direct"|"paper"; "trace": bool;

@@ -7,7 +7,6 @@
 
 #include <config.h>
 
-#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -50,9 +49,6 @@ int
 _wc_input_read_max(char ** text, size_t * len, const _wc_input * in,
                    size_t max, wc_error_t err)
 {
-    FILE * f;
-    int status;
-
     *text = NULL;
     *len = 0;
     if (in->stream != NULL)
@@ -71,12 +67,8 @@ _wc_input_read_max(char ** text, size_t * len, const _wc_input * in,
         *len = in->len;
         return WC_OK;
     }
-    if ((f = fopen(in->path, "rb")) == NULL)
-        return wc_error_set(err, WC_EINPUT, in->path, 0, 0, "cannot open: %s",
-                            strerror(errno));
-    status = _wc_read_all(text, len, f, in->name, max, err);
-    fclose(f);
-    return status;
+    return _wc_read_file(text, len, in->path, in->name, max, in->flags,
+                         in->avoid, err);
 }
 
 int

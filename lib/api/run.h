@@ -21,6 +21,7 @@
 
 #include "core/problem.h"
 #include "core/limits.h"
+#include "core/readall.h"
 #include "exact/cone.h"
 #include "analysis/wrench.h"
 #include "analysis/kinematics.h"
@@ -59,7 +60,9 @@ int _wc_command_find(const char * name);
 /* One input text: read from stream when it is not NULL (the command line
    passes stdin for "-"), else from the file path when text is NULL, else
    text[0..len) itself.  name is how errors and reports name it (the
-   path, "<stdin>", "<problem_text>").  */
+   path, "<stdin>", "<problem_text>").  A path is opened by
+   _wc_read_file with flags (_WC_READ_REGULAR for a request's) and
+   avoid (a batch's own input, or NULL).  */
 typedef struct
 {
     const char * name;
@@ -67,8 +70,18 @@ typedef struct
     FILE * stream;
     const char * text;
     size_t len;
+    int flags;
+    const _wc_file_id * avoid;
 }
 _wc_input;
+
+/* wc_request_json_at (api/request.h), except that no input the request
+   names may be the file avoid names (a batch's own input; NULL: none):
+   wc_batch's way (request.c).  */
+int _wc_request_json_avoid(char ** out, size_t * outlen,
+                           const char * request, size_t len,
+                           const char * file, long line,
+                           const _wc_file_id * avoid, wc_error_t err);
 
 /* Three numbers FX, FY, TAU as written; given: whether they were.  */
 typedef struct

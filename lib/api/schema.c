@@ -434,8 +434,8 @@ static const _wc_arg draw_options[] = {
       "Figures (exactly one)" },
     { "output", _WC_ARG_OUTPUT, "FILE", NULL, NULL, NULL, 0, 0,
       offsetof(_wc_request, output), _WC_ARG_CLI, 'o',
-      "write the figure to FILE (whole or not at all: a\n"
-      "temporary file beside it is renamed at the end);\n"
+      "write the figure to FILE (a regular file whole or\n"
+      "not at all, a FIFO or device written through);\n"
       "default (and -o -) standard output",
       NULL },
     { NULL }
@@ -449,7 +449,7 @@ static const _wc_arg report_operands[] = {
 static const _wc_arg report_options[] = {
     { "output", _WC_ARG_OUTPUT, "FILE", NULL, NULL, NULL, 0, 0,
       offsetof(_wc_request, output), _WC_ARG_CLI, 'o',
-      "write the page to FILE (whole or not at all);\n"
+      "write the page to FILE (as draw -o writes);\n"
       "default (and -o -) standard output",
       NULL },
     { NULL }

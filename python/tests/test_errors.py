@@ -2,7 +2,8 @@
 # status, carrying the file, line, column and message that the program
 # prints as "wrenchcone: FILE:LINE:COL: MESSAGE" for the same input: every
 # bad problem file of tests/bad (as a file and as inline text), a bad
-# mode, a bad wrench, a missing file, and bad requests.
+# mode, a bad wrench, a missing file, files that are not regular (a
+# FIFO, a device, a directory), and bad requests.
 #
 # Copyright (C) 2026 the wrenchcone authors.
 # This file is part of wrenchcone, free software under the GNU General
@@ -12,6 +13,7 @@ import glob
 import os
 import pickle
 import re
+import signal
 
 import pytest
 
@@ -91,6 +93,27 @@ def test_missing_file():
         wc.modes("data/no-such-problem.wc")
     same_as_program(info.value, ["modes", "data/no-such-problem.wc"])
     assert info.value.line is None
+
+
+def test_not_regular_files(tmp_path):
+    # A request reads regular files only: a FIFO nobody writes is refused
+    # at once (the alarm fails the test instead of hanging it), and so
+    # are a device without end and a directory.
+    fifo = tmp_path / "fifo"
+    os.mkfifo(fifo)
+    signal.alarm(20)
+    try:
+        for path, why in ((str(fifo), "not a regular file (a request "
+                           "reads regular files only)"),
+                          ("/dev/zero", "not a regular file (a request "
+                           "reads regular files only)"),
+                          (str(tmp_path), "read error: Is a directory")):
+            with pytest.raises(wc.InputError) as info:
+                wc.modes(path)
+            assert (info.value.file, info.value.line, info.value.message) \
+                == (path, None, why)
+    finally:
+        signal.alarm(0)
 
 
 def test_bad_requests():

@@ -263,9 +263,10 @@ def request(req):
 
 
 class Problem:
-    """A problem: a file (read by the library at each call, relative to
-    the working directory) or the text of one (named <problem_text> in
-    messages).  wrenchcone(5) describes the format."""
+    """A problem: a regular file (read by the library at each call,
+    relative to the working directory; a FIFO or a device is refused) or
+    the text of one (named <problem_text> in messages).  wrenchcone(5)
+    describes the format."""
 
     def __init__(self, path=None, text=None):
         if (path is None) == (text is None):
