@@ -58,9 +58,8 @@ cli_write_whole(const char * path, const char * what,
     free(tmp);
     if (bad)
     {
-        fprintf(stderr, PROG ": %s: cannot write the %s: %s\n", path, what,
-                strerror(saved ? saved : EIO));
-        return WC_EINTERNAL;
+        return cli_file_error(WC_EINTERNAL, path, "cannot write the %s: %s",
+                              what, strerror(saved ? saved : EIO));
     }
     return WC_OK;
 }

@@ -30,9 +30,8 @@ cmd_batch(const cli_command * self, int argc, char ** argv)
     f = strcmp(path, "-") == 0 ? stdin : fopen(path, "r");
     if (f == NULL)
     {
-        fprintf(stderr, PROG ": %s: cannot open: %s\n", path,
-                strerror(errno));
-        return cli_done(&R, WC_EINPUT);
+        return cli_done(&R, cli_file_error(WC_EINPUT, path, "cannot open: "
+                                           "%s", strerror(errno)));
     }
     wc_error_init(err);
     status = wc_batch(&worst, stdout, f, cli_input_name(path), (int) R.jobs,
