@@ -10,7 +10,8 @@
 
 WC_PYTHON_TESTS = python/tests/conftest.py python/tests/test_exact.py \
 	python/tests/test_errors.py python/tests/test_roundtrip.py \
-	python/tests/test_float_regression.py
+	python/tests/test_float_regression.py \
+	python/tests/test_text.py
 EXTRA_DIST += python/wrenchcone/__init__.py $(WC_PYTHON_TESTS)
 
 if WC_PYTHON

@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "core/text.h"
 
 /* Codes of the options of other commands: CLI_FOREIGN + their place in
    the table, all distinct, so that getopt_long finds an abbreviation
@@ -310,13 +311,18 @@ join_operands(char * buf, size_t size, const _wc_command_schema * S,
 static int
 wrong_operands(const _wc_command_schema * S, int few, char ** v, int n)
 {
-    char need[128], may[128], msg[300];
+    char need[128], may[128], msg[_WC_ARG_MSG_SIZE];
+    char shown[WC_QUOTE_SIZE(WC_SHOW_MAX)];
 
     join_operands(need, sizeof need, S, 0);
     join_operands(may, sizeof may, S, 1);
     if (S->operands->name == NULL)
+    {
+        _wc_quote(shown, n > 0 ? v[0] : "", n > 0 ? strlen(v[0]) : 0,
+                  WC_SHOW_MAX);
         snprintf(msg, sizeof msg, "%s takes no operands, not '%s'", S->name,
-                 n > 0 ? v[0] : "");
+                 shown);
+    }
     else if (few)
         snprintf(msg, sizeof msg, "%s needs %s", S->name, need);
     else if (may[0] == '\0')
@@ -326,7 +332,7 @@ wrong_operands(const _wc_command_schema * S, int few, char ** v, int n)
     else
         snprintf(msg, sizeof msg, "%s takes %s and optionally %s", S->name,
                  need, may);
-    return cli_usage_error(S->name, "%s", msg);
+    return cli_usage_said(S->name, msg);
 }
 
 /* The operands v[0..n) into R.  -1, or the exit status of a usage
@@ -335,7 +341,7 @@ static int
 operands(_wc_request * R, const _wc_command_schema * S, char ** v, int n)
 {
     const _wc_arg * a;
-    char msg[256];
+    char msg[_WC_ARG_MSG_SIZE];
     const char * why;
     int k = 0, need = 0;
 
@@ -354,7 +360,7 @@ operands(_wc_request * R, const _wc_command_schema * S, char ** v, int n)
             _wc_arg_set_wrench(R, a, (const char * const *) v + k);
         else if ((why = _wc_arg_set_text(R, a, v[k], msg, sizeof msg))
                  != NULL)
-            return cli_usage_error(S->name, "%s", why);
+            return cli_usage_said(S->name, why);
         k += w;
     }
     return k == n ? -1 : wrong_operands(S, 0, v, n);
@@ -430,7 +436,7 @@ cli_parse(_wc_request * R, const cli_command * self, int argc, char ** argv)
     const _wc_command_schema * S = self->schema;
     const _wc_arg * culprit;
     cli_options p;
-    char msg[256];
+    char msg[_WC_ARG_MSG_SIZE];
     const char * why;
     int c, status;
 
@@ -440,7 +446,7 @@ cli_parse(_wc_request * R, const cli_command * self, int argc, char ** argv)
         if ((why = _wc_arg_set_text(R, S->options + c,
                                     optarg != NULL ? optarg : "", msg,
                                     sizeof msg)) != NULL)
-            return cli_usage_error(S->name, "%s", why);
+            return cli_usage_said(S->name, why);
     if (c == CLI_EXIT)
         return p.status;
     R->decimals = p.decimals;
@@ -449,7 +455,7 @@ cli_parse(_wc_request * R, const cli_command * self, int argc, char ** argv)
     stdin_inputs(R, S);
     if (S->check != NULL && (why = S->check(msg, sizeof msg, &culprit, R))
         != NULL)
-        return cli_usage_error(S->name, "%s", why);
+        return cli_usage_said(S->name, why);
     return p.print_request ? print_request(R, S) : -1;
 }
 

@@ -6,11 +6,14 @@
 
 #include <config.h>
 
+#include <errno.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
+#include "core/text.h"
 
 void
 cli_version(void)
@@ -36,12 +39,49 @@ cli_report(const wc_error_t err, int status)
     return status;
 }
 
+/* The usage error in e, and where to find help.  */
+static int
+usage(const char * cmd, wc_error_t e)
+{
+    cli_progress_clear();
+    fprintf(stderr, PROG ": %s\nTry '" PROG "%s%s --help' for more "
+            "information.\n", e->message != NULL ? e->message
+            : "out of memory", cmd ? " " : "", cmd ? cmd : "");
+    wc_error_clear(e);
+    return WC_EUSAGE;
+}
+
 int
 cli_usage_error(const char * cmd, const char * fmt, const char * arg)
 {
-    fputs(PROG ": ", stderr);
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, "\nTry '" PROG "%s%s --help' for more information.\n",
-            cmd ? " " : "", cmd ? cmd : "");
-    return WC_EUSAGE;
+    wc_error_t e;
+
+    wc_error_init(e);
+    _wc_error_token(e, WC_EUSAGE, NULL, 0, 0, fmt, arg, strlen(arg));
+    return usage(cmd, e);
+}
+
+int
+cli_usage_said(const char * cmd, const char * msg)
+{
+    wc_error_t e;
+
+    wc_error_init(e);
+    wc_error_set(e, WC_EUSAGE, NULL, 0, 0, "%s", msg);
+    return usage(cmd, e);
+}
+
+int
+cli_file_error(int status, const char * path, const char * fmt, ...)
+{
+    wc_error_t e;
+    va_list ap;
+
+    wc_error_init(e);
+    va_start(ap, fmt);
+    wc_error_vset(e, status, path, 0, 0, fmt, ap);
+    va_end(ap);
+    cli_report(e, status);
+    wc_error_clear(e);
+    return status;
 }

@@ -47,9 +47,22 @@ void cli_version(void);
 /* Report err on stderr; returns status.  */
 int cli_report(const wc_error_t err, int status);
 
-/* "wrenchcone: " fmt (with arg), then where to find help (the command's
-   when cmd is not NULL); returns WC_EUSAGE.  */
+/* "wrenchcone: " fmt with its one %s the input token arg, quoted and
+   cut (_wc_quote), then where to find help (the command's when cmd is
+   not NULL); returns WC_EUSAGE.  */
 int cli_usage_error(const char * cmd, const char * fmt, const char * arg);
+
+/* The same with a whole message, its tokens quoted already (the message
+   of _wc_arg_set_text or of a schema check).  */
+int cli_usage_said(const char * cmd, const char * msg);
+
+/* "wrenchcone: PATH: " and the message fmt, the path quoted (an error
+   record's file, wc_error_set); returns status.  */
+int cli_file_error(int status, const char * path, const char * fmt, ...)
+#ifdef __GNUC__
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
 
 
 /* Progress on stderr (cli-progress.c): cli_progress_force for

@@ -22,8 +22,8 @@ cmd_compare(const cli_command * self, int argc, char ** argv)
     if (status >= 0)
         return cli_done(&R, status);
     if (R.problem.stream != NULL && R.foreign.stream != NULL)
-        status = cli_usage_error("compare", "PROBLEM and FILE cannot both be "
-                                 "standard input%s", "");
+        status = cli_usage_said("compare", "PROBLEM and FILE cannot both be "
+                                "standard input");
     else
         status = cli_answer(&R);
     return cli_done(&R, status);

@@ -29,6 +29,7 @@
 
 #include "check/verify.h"
 #include "core/limits.h"
+#include "core/text.h"
 #include "cli-base.h"
 
 #define PROG "wrenchcone-verify"
@@ -52,12 +53,17 @@ static const char usage[] =
     "  -h, --help       print this help and exit\n"
     "  -V, --version    print versions and exit\n";
 
+/* fmt with its one %s the input token arg, quoted and cut (_wc_quote).  */
 static int
 usage_error(const char * fmt, const char * arg)
 {
-    fputs(WHO, stderr);
-    fprintf(stderr, fmt, arg);
-    fputs("\nTry '" PROG " --help' for more information.\n", stderr);
+    wc_error_t e;
+
+    wc_error_init(e);
+    _wc_error_token(e, WC_EUSAGE, NULL, 0, 0, fmt, arg, strlen(arg));
+    fprintf(stderr, WHO "%s\nTry '" PROG " --help' for more information.\n",
+            e->message != NULL ? e->message : "out of memory");
+    wc_error_clear(e);
     return WC_EUSAGE;
 }
 

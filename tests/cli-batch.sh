@@ -10,7 +10,8 @@
 # the same lines as one cone per mode, and refuses a problem of over
 # 10000 modes; malformed lines, unknown or ill-typed keys and missing
 # files give the located error line and the batch goes on; the exit
-# status is the largest line's; an empty input gives nothing and status 0;
+# status is the worst line's, an error outranking a disagreement; an
+# empty input gives nothing and status 0;
 # --jobs=2 and 5 answer the same bytes as one thread, a bad --jobs is a
 # usage error.
 #
@@ -78,7 +79,13 @@ req() {
     0|4) cat "$tmp/out" >> "$tmp/want" ;;
     *) record $st >> "$tmp/want" ;;
     esac
-    [ $st -gt $worst ] && worst=$st
+    # errors rank above a disagreement (4), the larger error first
+    [ $(rank $st) -gt $(rank $worst) ] && worst=$st
+}
+
+# rank STATUS: 0, 4 (a disagreement, an answer), 1, 2, 3 in this order.
+rank() {
+    case $1 in 0) echo 0 ;; 4) echo 1 ;; *) echo $(($1 + 1)) ;; esac
 }
 
 : > "$tmp/requests"

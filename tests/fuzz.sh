@@ -10,7 +10,8 @@
 #
 # Environment:
 #   FUZZ_SECONDS  seconds per target (default 60)
-#   FUZZ_TARGETS  targets to run (default: parse verify compare cone)
+#   FUZZ_TARGETS  targets to run (default: parse verify compare cone
+#                 request)
 #   FUZZ_DIR      scratch folder (default ./_fuzz): the sanitized build,
 #                 the corpora, the logs and any reproducer; an earlier
 #                 build there is reused
@@ -25,7 +26,7 @@
 srcdir=${top_srcdir:-$(dirname "$0")/..}
 srcdir=$(cd "$srcdir" && pwd) || exit 99
 FUZZ_SECONDS=${FUZZ_SECONDS:-60}
-FUZZ_TARGETS=${FUZZ_TARGETS:-parse verify compare cone}
+FUZZ_TARGETS=${FUZZ_TARGETS:-parse verify compare cone request}
 FUZZ_DIR=${FUZZ_DIR:-_fuzz}
 FUZZ_CC=${FUZZ_CC:-clang}
 SAN="-fsanitize=address,undefined -fno-sanitize-recover=undefined"

@@ -66,7 +66,8 @@ C_TESTS = \
 	tests/t-request \
 	tests/t-decimals \
 	tests/t-foreignnum \
-	tests/t-threads
+	tests/t-threads \
+	tests/t-quote
 check_PROGRAMS += $(C_TESTS) tests/corpus-check
 LDADD = $(TEST_LIBS)
 tests_corpus_check_LDADD = $(WC_ARCHIVE)
@@ -104,6 +105,7 @@ tests_t_decimals_LINK = $(TEST_LINK)
 tests_t_foreignnum_LINK = $(TEST_LINK)
 tests_t_cellsref_LINK = $(TEST_LINK)
 tests_t_threads_LINK = $(TEST_LINK)
+tests_t_quote_LINK = $(TEST_LINK)
 tests_corpus_check_LINK = $(TEST_LINK)
 # the former directed distance, kept as a regression check
 tests_t_compare_fast_SOURCES = tests/t-compare-fast.c tests/old-hausdorff.c
@@ -111,6 +113,7 @@ tests_t_compare_fast_SOURCES = tests/t-compare-fast.c tests/old-hausdorff.c
 SH_TESTS = \
 	tests/verify-standalone.sh \
 	tests/cli-batch.sh \
+	tests/cli-quote.sh \
 	tests/cli-draw.sh \
 	tests/cli-verify.sh \
 	tests/cli-plan.sh \

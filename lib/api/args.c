@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "api/args.h"
+#include "core/text.h"
 #include "core/version.h"
 #include "io/print.h"
 
@@ -144,8 +145,10 @@ static const char *
 say_bad(char * msg, size_t size, const _wc_arg * a, const char * s,
                 int json)
 {
-    char key[64], list[160];
+    char key[64], list[160], shown[WC_QUOTE_SIZE(WC_SHOW_MAX)];
 
+    _wc_quote(shown, s, strlen(s), WC_SHOW_MAX);
+    s = shown;
     if (a->kind == _WC_ARG_CHOICE)
     {
         choices(list, sizeof list, a->values);

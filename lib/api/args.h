@@ -17,8 +17,14 @@
 #include "api/run.h"
 #include "api/schema.h"
 
+/* Room for any message of _wc_arg_set_text or of a schema check: a
+   value quoted (_wc_quote, at most WC_QUOTE_SIZE(WC_SHOW_MAX) bytes) and
+   the words around it.  */
+#define _WC_ARG_MSG_SIZE 512
+
 /* Read s, the value of row a as written, into R's field.  NULL, or the
-   message of a usage error in msg[0..size) (the words depend on
+   message of a usage error in msg[0..size) (size at least
+   _WC_ARG_MSG_SIZE; the value quoted, _wc_quote; the words depend on
    R->from_request: "--tol must be ...", or "\"tol\" must be ...").  A
    wrench "FX,FY,TAU" is cut into a copy that R owns.  An input is the
    file s (the command line turns "-" into standard input).  */

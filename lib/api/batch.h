@@ -32,7 +32,11 @@ extern "C" {
    answered; in and out may not be the same regular file (WC_EINPUT, and
    nothing read).
 
-   *worst := the largest status of the answers written (WC_OK if none).
+   *worst := the batch's status from the answers written: WC_OK when
+   there are none or all are WC_OK; else the largest status of an error
+   record (WC_EINPUT, WC_EUSAGE, WC_EINTERNAL) when there is one, so
+   WC_EINTERNAL when any line met an internal failure; else WC_EDISAGREE
+   (every line answered, some comparison beyond its tolerance).
    Returns WC_OK when every line was read and answered; else WC_EINTERNAL
    with err set, and the answers of the lines before the failure written:
    "NAME: read error: ..." (in), "write error: ..." (out; its error

@@ -7,6 +7,7 @@
 
 #include <config.h>
 
+#include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,6 +19,7 @@
 #include "api/schema.h"
 #include "api/runners.h"
 #include "core/json.h"
+#include "core/text.h"
 #include "core/thread.h"
 
 /* Where the request's errors are located.  */
@@ -29,6 +31,16 @@ typedef struct
     const _wc_file_id * avoid;  /* a batch's own input, or NULL */
 }
 where;
+
+/* The line of the file where the request's line l (>= 1) is: the
+   request's first line is w->line; LONG_MAX beyond.  */
+static long
+file_line(const where * w, long l)
+{
+    if (l < 1)
+        return w->line;
+    return w->line > LONG_MAX - (l - 1) ? LONG_MAX : w->line + (l - 1);
+}
 
 /* A usage error at node v (NULL: the request's start).  */
 static int
@@ -46,7 +58,7 @@ bad(const where * w, const wc_json_node * v, const char * fmt, ...)
 
     va_start(ap, fmt);
     status = wc_error_vset(w->err, WC_EUSAGE, w->file,
-                           w->line + (v != NULL ? v->line : 1) - 1,
+                           file_line(w, v != NULL ? v->line : 1),
                            v != NULL ? v->col : 1, fmt, ap);
     va_end(ap);
     return status;
@@ -190,10 +202,11 @@ check_keys(const wc_json_node * o, const _wc_command_schema * S,
             found = names_row(key->text, a);
         if (!found)
         {
-            wc_error_set(w->err, WC_EUSAGE, w->file, w->line + key->line - 1,
-                         key->col, "\"%s\" is not a key of a %s request",
-                         key->text, S->name);
-            return WC_EUSAGE;
+            char shown[WC_QUOTE_SIZE(WC_SHOW_MAX)];
+
+            _wc_quote(shown, key->text, key->len, WC_SHOW_MAX);
+            return bad(w, key, "\"%s\" is not a key of a %s request", shown,
+                       S->name);
         }
     }
     return WC_OK;
@@ -207,7 +220,7 @@ read_arg(_wc_request * R, const _wc_arg * a, int operand,
 {
     const wc_json_node * v;
     const char * s = NULL, * why;
-    char key[64], text_key[80], text_name[96], msg[256];
+    char key[64], text_key[80], text_name[96], msg[_WC_ARG_MSG_SIZE];
     int status = WC_OK;
 
     _wc_arg_key(key, sizeof key, a);
@@ -260,7 +273,8 @@ read_request(_wc_request * R, const wc_json_node * o, const where * w)
     const _wc_command_schema * S;
     const _wc_arg * a, * culprit = NULL;
     const wc_json_node * v;
-    char msg[256], list[256] = "", key[64];
+    char msg[_WC_ARG_MSG_SIZE], list[256] = "", key[64];
+    char shown[WC_QUOTE_SIZE(WC_SHOW_MAX)];
     const char * why;
     int status = WC_OK;
 
@@ -285,7 +299,8 @@ read_request(_wc_request * R, const wc_json_node * o, const where * w)
                 snprintf(list + strlen(list), sizeof list - strlen(list),
                          "%s%s", k++ == 0 ? "" : k == n ? " or " : ", ",
                          c->name);
-        return bad(w, v, "unknown command '%s' (%s)", v->text, list);
+        _wc_quote(shown, v->text, v->len, WC_SHOW_MAX);
+        return bad(w, v, "unknown command '%s' (%s)", shown, list);
     }
     _wc_request_init(R, (_wc_command) (S - _wc_schema));
     R->from_request = 1;
@@ -411,7 +426,7 @@ _wc_request_json_avoid(char ** out, size_t * outlen, const char * request,
     if (status == WC_EINPUT)
     {
         /* Not JSON: the request's fault, as a bad command line is.  */
-        err->line += w.line - 1;
+        err->line = file_line(&w, err->line);
         status = WC_EUSAGE;
     }
     if (status == WC_OK)

@@ -17,7 +17,7 @@
 static void
 put_face(wc_check_text * b, size_t k, const char * sign, int rotation)
 {
-    char * shown = _wc_show(sign, strlen(sign), 1);
+    char * shown = _wc_show(sign, strlen(sign));
 
     if (shown == NULL)
     {

@@ -340,7 +340,7 @@ check(wc_check_text * why, const certificate * C, const char * mode)
     mpq_t * s = NULL;
     mpq_t t;
     int holds = -1;
-    char * shown = _wc_show(mode, strlen(mode), 1);  /* a long mode cut */
+    char * shown = _wc_show(mode, strlen(mode));  /* a long mode cut */
 
     mpq_init(t);
     s = _wc_check_qvec_new(3);

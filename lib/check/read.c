@@ -47,7 +47,7 @@ int
 _wc_check_bad_quoting(wc_check_reader * c, const wc_json_node * at,
                       const char * fmt, const char * s, size_t len)
 {
-    char * t = _wc_show(s, len, 1);
+    char * t = _wc_show(s, len);
 
     if (t == NULL)
         return _wc_check_nomem(c);

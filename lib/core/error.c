@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "core/error.h"
+#include "core/text.h"
 
 void
 wc_error_init(wc_error_t e)
@@ -53,12 +54,15 @@ wc_error_vset(wc_error_t e, int status, const char * file, long line,
 
     /* Format before freeing: the arguments may point into e itself.  */
     if (file != NULL)
-    {
-        f = malloc(strlen(file) + 1);
-        if (f != NULL)
-            strcpy(f, file);
-    }
+        f = _wc_show_cut(file, strlen(file), WC_SHOW_PATH_MAX);
     m = vformat(fmt, ap);
+    if (m != NULL)
+    {
+        char * q = _wc_show_cut(m, strlen(m), WC_MESSAGE_MAX);
+
+        free(m);
+        m = q;
+    }
     wc_error_clear(e);
     e->file = f;
     e->line = line;

@@ -43,7 +43,14 @@ void wc_error_init(wc_error_t e);
 void wc_error_clear(wc_error_t e);
 
 /* Replace the record's contents; file may be NULL.  Returns status, so a
-   caller can write  return wc_error_set(e, WC_EINPUT, ...);  */
+   caller can write  return wc_error_set(e, WC_EINPUT, ...);
+   The file and the message are kept quoted for display, whatever the
+   caller passes: each byte that is not part of valid UTF-8 and each
+   control character written as \xNN (C1 controls, line separators and
+   invisible format characters as \uXXXX, _wc_quote), the file cut after WC_SHOW_PATH_MAX bytes and the message
+   after WC_MESSAGE_MAX (core/limits.h), with "..." where cut and never
+   inside a character.  So a record, formatted or written as JSON, is
+   one line of valid UTF-8.  */
 int wc_error_set(wc_error_t e, int status, const char * file, long line,
                  long col, const char * fmt, ...)
 #ifdef __GNUC__

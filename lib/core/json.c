@@ -188,7 +188,7 @@ nomem(reader * r)
 static int
 fail_quoting(reader * r, size_t off, const char * fmt, size_t a, size_t b)
 {
-    char * t = _wc_show(r->s + a, b - a, 1);
+    char * t = _wc_show(r->s + a, b - a);
     int status;
 
     if (t == NULL)
@@ -199,32 +199,17 @@ fail_quoting(reader * r, size_t off, const char * fmt, size_t a, size_t b)
 }
 
 /* Error about the byte at r->pos, or the end of the input: what is
-   "expected ..." (fmt has one %s: the byte found, shown).  */
+   "expected ..." (fmt has one %s: the byte found, quoted alone, so a
+   byte of a longer character is shown by its code).  */
 static int
 fail_found(reader * r, const char * fmt)
 {
-    char shown[8];
-    unsigned char c;
+    char shown[WC_QUOTE_SIZE(1)];
 
     if (r->pos >= r->len)
         return fail_at(r, r->line, col_of(r, r->pos),
                        "unexpected end of input");
-    c = (unsigned char) r->s[r->pos];
-    if (c < 0x20 || c >= 0x7f)
-    {
-        static const char hex[] = "0123456789abcdef";
-
-        shown[0] = '\\';
-        shown[1] = 'x';
-        shown[2] = hex[c >> 4];
-        shown[3] = hex[c & 15];
-        shown[4] = '\0';
-    }
-    else
-    {
-        shown[0] = (char) c;
-        shown[1] = '\0';
-    }
+    _wc_quote(shown, r->s + r->pos, 1, 1);
     return fail_at(r, r->line, col_of(r, r->pos), fmt, shown);
 }
 
@@ -279,48 +264,6 @@ hex4(const char * s, size_t i, size_t end)
         u = 16 * u + h;
     }
     return u;
-}
-
-/* The length of the valid UTF-8 sequence at s[i..end), 0 when invalid
-   (Unicode 3.9, Table 3-7: no overlong forms, no surrogates, nothing
-   above U+10FFFF).  */
-static size_t
-utf8_length(const unsigned char * s, size_t i, size_t end)
-{
-    unsigned char c = s[i];
-    unsigned char lo = 0x80, hi = 0xbf;
-    size_t n, k;
-
-    if (c < 0x80)
-        return 1;
-    if (c >= 0xc2 && c <= 0xdf)
-        n = 2;
-    else if (c >= 0xe0 && c <= 0xef)
-    {
-        n = 3;
-        if (c == 0xe0)
-            lo = 0xa0;
-        else if (c == 0xed)
-            hi = 0x9f;
-    }
-    else if (c >= 0xf0 && c <= 0xf4)
-    {
-        n = 4;
-        if (c == 0xf0)
-            lo = 0x90;
-        else if (c == 0xf4)
-            hi = 0x8f;
-    }
-    else
-        return 0;
-    if (end - i < n)
-        return 0;
-    if (s[i + 1] < lo || s[i + 1] > hi)
-        return 0;
-    for (k = 2; k < n; k++)
-        if (s[i + k] < 0x80 || s[i + k] > 0xbf)
-            return 0;
-    return n;
 }
 
 static size_t
@@ -380,7 +323,7 @@ decode_string(reader * r, char * d, size_t * n, size_t a, size_t end,
     {
         if (s[i] != '\\')
         {
-            size_t k = utf8_length(s, i, end);
+            size_t k = _wc_utf8_length(s + i, end - i);
 
             if (k == 0)
                 return fail_at(r, r->line, col_of(r, i),
@@ -456,7 +399,7 @@ decode_string(reader * r, char * d, size_t * n, size_t a, size_t end,
         default:
         {
             /* show the whole escaped character, however many bytes */
-            size_t k = utf8_length(s, i + 1, end);
+            size_t k = _wc_utf8_length(s + i + 1, end - i - 1);
 
             return fail_quoting(r, i, "invalid escape '%s'", i,
                                 i + 1 + (k == 0 ? 1 : k));
@@ -504,18 +447,8 @@ parse_string(reader * r, wc_json_node * v)
     if (!closed)
     {
         if (i < r->len)
-        {
-            char c[8];
-            static const char hex[] = "0123456789abcdef";
-
-            c[0] = '\\';
-            c[1] = 'x';
-            c[2] = hex[s[i] >> 4];
-            c[3] = hex[s[i] & 15];
-            c[4] = '\0';
-            return fail_at(r, r->line, col_of(r, i),
-                           "control character '%s' in string", c);
-        }
+            return fail_quoting(r, i, "control character '%s' in string", i,
+                                i + 1);
         return fail_at(r, v->line, v->col, "unterminated string");
     }
     d[n] = '\0';
@@ -745,7 +678,7 @@ check_duplicates(reader * r, const wc_json_node * v, size_t m, int status)
     if (status != WC_OK && (r->eline < key->line
                             || (r->eline == key->line && r->ecol < key->col)))
         return status;
-    t = _wc_show(key->text, key->len, 1);
+    t = _wc_show(key->text, key->len);
     if (t == NULL)
         return nomem(r);
     status = fail_at(r, key->line, key->col, "duplicate key '%s'", t);

@@ -62,6 +62,12 @@
    stays one readable line.  */
 #define WC_SHOW_MAX 64
 
+/* An error record's file name is cut after this many bytes, its message
+   after this many (wc_error_set): whatever a caller passes, a record
+   stays a bounded line of valid UTF-8.  */
+#define WC_SHOW_PATH_MAX 1024
+#define WC_MESSAGE_MAX 4096
+
 /* ------------------------------------------------------------------ */
 /* Commands: the most fixels (or touching or near fixels) each takes.  */
 

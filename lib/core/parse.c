@@ -78,16 +78,23 @@ parse_name(wc_parser * ps)
     name = malloc(t.end - t.start);
     if (name == NULL)
         return nomem(ps);
+    /* A label goes into every output, JSON and SVG too: UTF-8 text
+       without control characters (a tab is fine).  */
     for (i = t.start + 1; i + 1 < t.end; i++)
     {
+        size_t k = _wc_utf8_length((const unsigned char *) s + i,
+                                   t.end - 1 - i);
+
         if (s[i] == '\\')
         {
             if (s[i + 1] != '"' && s[i + 1] != '\\')
             {
+                k = _wc_utf8_length((const unsigned char *) s + i + 1,
+                                    t.end - 2 - i);
                 status = _wc_error_token(lx->err, WC_EINPUT, lx->file,
                                          lx->line, _wc_lx_col(lx, i),
                                          "bad escape '%s' in string", s + i,
-                                         2);
+                                         1 + (k > 0 ? k : 1));
                 goto cleanup;
             }
             i++;
@@ -96,6 +103,27 @@ parse_name(wc_parser * ps)
         {
             status = _wc_lx_error(lx, _wc_lx_col(lx, i), "NUL byte in string");
             goto cleanup;
+        }
+        else if (k == 0)
+        {
+            status = _wc_lx_error(lx, _wc_lx_col(lx, i),
+                                  "invalid UTF-8 in string");
+            goto cleanup;
+        }
+        else if (((unsigned char) s[i] < 0x20 && s[i] != '\t')
+                 || s[i] == 0x7f)
+        {
+            status = _wc_error_token(lx->err, WC_EINPUT, lx->file, lx->line,
+                                     _wc_lx_col(lx, i), "control character "
+                                     "'%s' in string", s + i, 1);
+            goto cleanup;
+        }
+        else
+        {
+            memcpy(name + j, s + i, k);
+            j += k;
+            i += k - 1;
+            continue;
         }
         name[j++] = s[i];
     }
@@ -505,8 +533,8 @@ point_string(const fmpq * p)
 {
     char * x = fmpq_get_str(NULL, 10, p + 0);
     char * y = fmpq_get_str(NULL, 10, p + 1);
-    char * sx = _wc_show(x, strlen(x), 0);
-    char * sy = _wc_show(y, strlen(y), 0);
+    char * sx = _wc_show(x, strlen(x));
+    char * sy = _wc_show(y, strlen(y));
     char * s = NULL;
 
     if (sx != NULL && sy != NULL)

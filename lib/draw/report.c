@@ -39,29 +39,10 @@ static const char style[] =
     "font-size: 8pt; } figure { break-inside: avoid; } h2 { "
     "break-after: avoid; } }\n";
 
-/* s, escaped for HTML and XML.  */
-static void
-escape(FILE * out, const char * s, size_t len)
-{
-    size_t i;
-
-    for (i = 0; i < len; i++)
-        if (s[i] == '&')
-            fputs("&amp;", out);
-        else if (s[i] == '<')
-            fputs("&lt;", out);
-        else if (s[i] == '>')
-            fputs("&gt;", out);
-        else if (s[i] == '"')
-            fputs("&quot;", out);
-        else
-            putc(s[i], out);
-}
-
 static void
 escape0(FILE * out, const char * s)
 {
-    escape(out, s, strlen(s));
+    _wc_svg_put_text(out, s, strlen(s));
 }
 
 /* What a printer writes as o says, escaped, in a <pre>.  */
@@ -83,7 +64,7 @@ pre(FILE * out, printer p, const void * data, const wc_print_opts * o)
     if (status == WC_OK)
     {
         fputs("<pre>", out);
-        escape(out, buf, len);
+        _wc_svg_put_text(out, buf, len);
         fputs("</pre>\n", out);
     }
     free(buf);

@@ -165,6 +165,14 @@ int _wc_scene_vcaption(_wc_scene_t S, const char * head, const char * fmt,
 #endif
     ;
 
+/* s[0..len) as XML character data or an attribute's value: & < > and "
+   as entities, tab, newline and CR as they are, valid UTF-8 as it is, and
+   any other control byte, DEL and each byte that is not part of valid
+   UTF-8 as the text \xNN, so that whatever s holds (a problem's path,
+   say) the document stays well-formed UTF-8.  The one text writer of
+   the SVG and the HTML report.  */
+void _wc_svg_put_text(FILE * out, const char * s, size_t len);
+
 /* A malloc'd decimal string of x ("1/5" as "1/5"), or NULL.  */
 char * _wc_draw_fmpq_str(const fmpq_t x);
 

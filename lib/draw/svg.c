@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "draw/scene.h"
+#include "core/text.h"
 
 #define WIDTH 640.0
 #define MARGIN 30.0
@@ -98,20 +99,42 @@ _wc_svg_transform(double * t, const _wc_scene_t S)
     t[1] = TOP + 20 + s * box[3];
 }
 
+void
+_wc_svg_put_text(FILE * out, const char * s, size_t len)
+{
+    const unsigned char * u = (const unsigned char *) s;
+    size_t i = 0;
+
+    while (i < len)
+    {
+        unsigned char c = u[i];
+        size_t k = _wc_utf8_length(u + i, len - i);
+
+        if (c == '&')
+            fputs("&amp;", out);
+        else if (c == '<')
+            fputs("&lt;", out);
+        else if (c == '>')
+            fputs("&gt;", out);
+        else if (c == '"')
+            fputs("&quot;", out);
+        else if (k == 0 || (c < 0x20 && c != '\t' && c != '\n' && c != '\r')
+                 || c == 0x7f)
+            fprintf(out, "\\x%02x", c);
+        else
+        {
+            fwrite(s + i, 1, k, out);
+            i += k;
+            continue;
+        }
+        i++;
+    }
+}
+
 static void
 put_text(FILE * out, const char * s)
 {
-    for (; *s; s++)
-        if (*s == '&')
-            fputs("&amp;", out);
-        else if (*s == '<')
-            fputs("&lt;", out);
-        else if (*s == '>')
-            fputs("&gt;", out);
-        else if (*s == '"')
-            fputs("&quot;", out);
-        else
-            putc(*s, out);
+    _wc_svg_put_text(out, s, strlen(s));
 }
 
 static void
@@ -401,7 +424,12 @@ caption_lines(FILE * out, const char * s, double y)
             for (cut = CAPTION_CHARS; cut > 0 && s[cut] != ' '; cut--)
                 ;
             if (cut == 0)
+            {
+                /* no space: cut between two characters, not in one */
                 cut = CAPTION_CHARS;
+                while (cut > 1 && ((unsigned char) s[cut] & 0xc0) == 0x80)
+                    cut--;
+            }
         }
         if (out != NULL)
         {

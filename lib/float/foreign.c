@@ -154,7 +154,7 @@ int
 _wc_located_quoting(const _wc_source * s, long line, long col,
                     const char * fmt, const char * t, size_t n)
 {
-    char * q = _wc_show(t, n, 1);
+    char * q = _wc_show(t, n);
 
     if (q == NULL)
         return wc_error_set(s->err, WC_EINTERNAL, s->file, 0, 0,

@@ -9,7 +9,10 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
+#include "core/text.h"
 #include "core/version.h"
 #include "io/compareprint.h"
 #include "io/print.h"
@@ -501,6 +504,7 @@ wc_comparison_fprint(FILE * out, const wc_comparison_t R, const wc_cone_t W,
 {
     slong i, excl = W->empty ? 0 : wc_cone_excluded_faces(W);
     int first = 1;
+    char * qfile, * qproblem, * qmode;
 
     if (o != NULL && o->format == WC_FORMAT_JSON)
     {
@@ -508,6 +512,22 @@ wc_comparison_fprint(FILE * out, const wc_comparison_t R, const wc_cone_t W,
         return ferror(out) ? WC_EINTERNAL : WC_OK;
     }
 
+    /* The paths and the file's mode are input: quoted in the text (the
+       JSON writer quotes what JSON cannot hold).  */
+    qfile = _wc_show_cut(file, strlen(file), WC_SHOW_PATH_MAX);
+    qproblem = _wc_show_cut(problem, strlen(problem), WC_SHOW_PATH_MAX);
+    qmode = R->file_mode != NULL
+        ? _wc_show(R->file_mode, strlen(R->file_mode)) : NULL;
+    if (qfile == NULL || qproblem == NULL
+        || (R->file_mode != NULL && qmode == NULL))
+    {
+        free(qfile);
+        free(qproblem);
+        free(qmode);
+        return WC_EINTERNAL;
+    }
+    file = qfile;
+    problem = qproblem;
     fprintf(out, "exact (GMP) against %s; distances are floating-point "
             "angles in radians\n", file);
     fputs("(the exact side decides emptiness, dimension, extreme rays and "
@@ -516,7 +536,7 @@ wc_comparison_fprint(FILE * out, const wc_comparison_t R, const wc_cone_t W,
     text_cone_summary(out, W);
     fprintf(out, "\ntolerance %g\n", R->tol);
     if (R->file_mode != NULL)
-        fprintf(out, "the file is for mode %s, not %s\n", R->file_mode, mode);
+        fprintf(out, "the file is for mode %s, not %s\n", qmode, mode);
     for (i = 0; i < R->nreps; i++)
         text_rep(out, R->reps + i, W, file, R->json_file);
     fprintf(out, "\n%s:\n", strict_note);
@@ -539,8 +559,7 @@ wc_comparison_fprint(FILE * out, const wc_comparison_t R, const wc_cone_t W,
         fputs("verdict: outside tolerance: ", out);
         if (R->differs & WC_CMP_MODE)
         {
-            fprintf(out, "the file is for mode %s, not %s", R->file_mode,
-                    mode);
+            fprintf(out, "the file is for mode %s, not %s", qmode, mode);
             first = 0;
         }
         for (i = 0; i < R->nreps; i++)
@@ -556,5 +575,8 @@ wc_comparison_fprint(FILE * out, const wc_comparison_t R, const wc_cone_t W,
         }
         putc('\n', out);
     }
+    free(qfile);
+    free(qproblem);
+    free(qmode);
     return ferror(out) ? WC_EINTERNAL : WC_OK;
 }

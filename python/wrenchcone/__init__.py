@@ -37,6 +37,7 @@ import ctypes
 import ctypes.util
 import inspect
 import json
+import math
 import numbers
 import os
 import re
@@ -201,7 +202,9 @@ def request_json(text):
     or 4 for a comparison beyond its tolerance, or 1, 2, 3 with an error
     record as the answer) and the answer line without its newline."""
     lib = _load()
-    data = text.encode("utf-8")
+    # A lone surrogate goes as its bytes, which are not UTF-8: the
+    # library refuses them with a located UsageError, as any bad byte.
+    data = text.encode("utf-8", "surrogatepass")
     out = ctypes.c_void_p()
     outlen = ctypes.c_size_t()
     err = _ErrorRecord()
@@ -269,7 +272,9 @@ class Problem:
     describes the format."""
 
     def __init__(self, path=None, text=None):
-        if (path is None) == (text is None):
+        if path is None and text is None:
+            raise TypeError("Problem needs a path or a text")
+        if path is not None and text is not None:
             raise TypeError("Problem takes a path or a text, not both")
         self.path = None if path is None else os.fspath(path)
         self.text = text
@@ -317,6 +322,10 @@ def _number(x):
     if isinstance(x, numbers.Rational):
         return "%d/%d" % (x.numerator, x.denominator)
     if isinstance(x, numbers.Real):
+        if not math.isfinite(x):
+            # "nan", "inf", "-inf": refused by the library as the command
+            # line refuses them (InputError, bad number)
+            return repr(float(x))
         f = Fraction(float(x))
         return "%d/%d" % (f.numerator, f.denominator)
     raise TypeError("not a number: %r" % (x,))
@@ -412,13 +421,14 @@ def _make(c):
     """The function of command c (its schema): operands in order, then
     the options as keywords."""
     params, kinds = [], {}
-    # An input may be given as KEY_text instead, so it may be left out
-    # when no required operand follows it.
-    later = False
-    for a in reversed(c["operands"]):
-        may = a["optional"] or (a["kind"] == "input" and not later)
-        later = later or not may
-        params.insert(0, inspect.Parameter(
+    # An input may be given as KEY_text instead, so it may be left out,
+    # and the operands after it with it (compare(mode="na",
+    # problem_text=T, foreign=F)): from the first input on, every operand
+    # defaults to None and command() says which required one is missing.
+    may = False
+    for a in c["operands"]:
+        may = may or a["optional"] or a["kind"] == "input"
+        params.append(inspect.Parameter(
             a["key"], inspect.Parameter.POSITIONAL_OR_KEYWORD,
             default=None if may else inspect.Parameter.empty))
         kinds[a["key"]] = a["kind"]
@@ -450,10 +460,18 @@ def _make(c):
             else:       # KEY_text, certificate
                 req[key] = value
         for a in c["operands"]:
-            if a["kind"] == "input" and not a["optional"] \
-                    and (a["key"] in req) == (a["key"] + "_text" in req):
-                raise TypeError("%s takes %s or %s_text, one of them"
-                                % (name, a["key"], a["key"]))
+            key = a["key"]
+            if a["kind"] != "input":
+                if not a["optional"] and bound.arguments.get(key) is None:
+                    raise TypeError("%s() missing a required argument: %r"
+                                    % (name, key))
+            elif key in req and key + "_text" in req:
+                raise TypeError("%s takes %s or %s_text, not both"
+                                % (name, key, key))
+            elif not a["optional"] and key not in req \
+                    and key + "_text" not in req:
+                raise TypeError("%s needs %s or %s_text"
+                                % (name, key, key))
         answer = request(req)
         return _RESULTS.get(name, lambda d: d)(answer)
 
